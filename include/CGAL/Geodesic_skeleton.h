@@ -1,0 +1,14 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_GEODESIC_SKELETON_H
+#define CGAL_GEODESIC_SKELETON_H
+
+/// \file Geodesic_skeleton.h
+/// The umbrella header of the package: includes every public header, in the order of the
+/// data flow (DESIGN.md). Include a single stage's header instead to compile less.
+
+#include <CGAL/Geodesic_skeleton/parameters.h>
+#include <CGAL/Geodesic_skeleton/geodesic_distances.h>
+
+#endif // CGAL_GEODESIC_SKELETON_H

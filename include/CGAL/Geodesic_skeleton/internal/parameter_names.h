@@ -1,0 +1,11 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The one list of the package's own named-parameter names (no include guard on purpose:
+// it is included with different definitions of CGAL_GEODESIC_SKELETON_NAMED_PARAMETER).
+// CGAL's names (vertex_point_map, vertex_index_map, edge_weight_map, geom_traits, ...)
+// are not repeated here. Each name is documented where the function that reads it is.
+
+// geodesic_distances
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(vertex_predecessor_map)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(edge_weight_map)

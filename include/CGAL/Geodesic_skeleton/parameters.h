@@ -1,0 +1,90 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Named parameters of the package.
+//
+// The package reuses CGAL's named-parameter machinery (CGAL::Named_function_parameters,
+// CGAL::parameters::get_parameter, CGAL::parameters::choose_parameter) and CGAL's own
+// names for CGAL's ideas (vertex_point_map, vertex_index_map, edge_weight_map,
+// geom_traits, ...). CGAL keeps its names in one central list that an out-of-tree package
+// cannot extend, so the names that are new here are defined in this header, in the
+// namespace CGAL::Geodesic_skeleton::parameters, and any two packs (ours or CGAL's) are
+// joined with `combine()`.
+
+#ifndef CGAL_GEODESIC_SKELETON_PARAMETERS_H
+#define CGAL_GEODESIC_SKELETON_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+
+namespace CGAL {
+namespace Geodesic_skeleton {
+
+/// Tag types of the package's own named parameters (one enum per name, as in CGAL).
+namespace internal_np {
+#define CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(NAME) enum NAME##_t { NAME##_tag };
+#include <CGAL/Geodesic_skeleton/internal/parameter_names.h>
+#undef CGAL_GEODESIC_SKELETON_NAMED_PARAMETER
+} // namespace internal_np
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// Named parameters: CGAL's own (re-exported) and the package's new names.
+namespace parameters {
+
+using namespace CGAL::parameters; // vertex_point_map, vertex_index_map, geom_traits, ...
+
+#define CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(NAME)                                  \
+  template <typename T>                                                               \
+  CGAL::Named_function_parameters<T, CGAL::Geodesic_skeleton::internal_np::NAME##_t>  \
+  NAME(const T& value)                                                                \
+  {                                                                                   \
+    return CGAL::Named_function_parameters<                                           \
+        T, CGAL::Geodesic_skeleton::internal_np::NAME##_t>(value);                    \
+  }
+#include <CGAL/Geodesic_skeleton/internal/parameter_names.h>
+#undef CGAL_GEODESIC_SKELETON_NAMED_PARAMETER
+
+namespace internal {
+
+// The last link of a pack: it takes the whole second pack as its base.
+template <typename T, typename Tag, typename Pack>
+CGAL::Named_function_parameters<T, Tag, Pack>
+append_pack(const CGAL::Named_function_parameters<T, Tag, CGAL::internal_np::No_property>& first,
+            const Pack& second)
+{
+  return CGAL::Named_function_parameters<T, Tag, Pack>(first.v, second);
+}
+
+// An inner link: rebuild it on top of the first pack's base joined with the second pack.
+template <typename T, typename Tag, typename Base, typename Pack>
+auto append_pack(const CGAL::Named_function_parameters<T, Tag, Base>& first, const Pack& second)
+{
+  auto joined_base = append_pack(static_cast<const Base&>(first), second);
+  return CGAL::Named_function_parameters<T, Tag, decltype(joined_base)>(first.v, joined_base);
+}
+
+} // namespace internal
+
+/// Joins two named-parameter packs into one. When a name appears in both, the value in
+/// `first` wins (lookups stop at the first match).
+///
+/// Example: `combine(parameters::resolution(128), parameters::vertex_point_map(vpm))`.
+template <typename T1, typename Tag1, typename Base1, typename T2, typename Tag2, typename Base2>
+auto combine(const CGAL::Named_function_parameters<T1, Tag1, Base1>& first,
+             const CGAL::Named_function_parameters<T2, Tag2, Base2>& second)
+{
+  return internal::append_pack(first, second);
+}
+
+/// Joins more than two packs, left to right.
+template <typename Pack1, typename Pack2, typename... Packs>
+auto combine(const Pack1& first, const Pack2& second, const Packs&... rest)
+{
+  return combine(combine(first, second), rest...);
+}
+
+} // namespace parameters
+
+} // namespace Geodesic_skeleton
+} // namespace CGAL
+
+#endif // CGAL_GEODESIC_SKELETON_PARAMETERS_H

@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Installs what is missing (apt-get), builds the package's tests, examples and documentation
+# checks in ./build, and runs them with CTest. Exits non-zero when any test fails.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install_dependencies.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake --build build --parallel "$(nproc)"
+cd build
+ctest --output-on-failure --parallel "$(nproc)"
