@@ -3,9 +3,13 @@
 //
 // The one list of the package's own named-parameter names (no include guard on purpose:
 // it is included with different definitions of CGAL_GEODESIC_SKELETON_NAMED_PARAMETER).
-// CGAL's names (vertex_point_map, vertex_index_map, edge_weight_map, geom_traits, ...)
+// CGAL's names (vertex_point_map, vertex_index_map, geom_traits, ...)
 // are not repeated here. Each name is documented where the function that reads it is.
 
 // geodesic_distances
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(vertex_predecessor_map)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(edge_weight_map)
+
+// geodesic_mapping_function, integral_geodesic_mapping_function
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(source_vertices)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(number_of_base_vertices)

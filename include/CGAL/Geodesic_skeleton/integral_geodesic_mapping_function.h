@@ -1,0 +1,179 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_GEODESIC_SKELETON_INTEGRAL_GEODESIC_MAPPING_FUNCTION_H
+#define CGAL_GEODESIC_SKELETON_INTEGRAL_GEODESIC_MAPPING_FUNCTION_H
+
+/// \file integral_geodesic_mapping_function.h
+/// The mapping function of the Multiresolution Reeb Graph (Hilaga et al. 2001): the
+/// integral of the geodesic distance over the surface, normalised to [0, 1].
+
+#include <CGAL/Geodesic_skeleton/internal/distance_fields.h>
+#include <CGAL/Geodesic_skeleton/internal/vertex_components.h>
+#include <CGAL/Geodesic_skeleton/parameters.h>
+
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Geodesic_skeleton {
+namespace internal {
+
+// A third of the area of the faces around each vertex (polygons split in fans), by index.
+template <typename FaceGraph, typename VertexPointMap, typename VertexIndexMap>
+std::vector<double> vertex_areas(const FaceGraph& g, VertexPointMap vpm, VertexIndexMap vim)
+{
+  std::vector<double> area(static_cast<std::size_t>(num_vertices(g)), 0.0);
+  for(auto f : faces(g))
+  {
+    std::vector<std::array<double, 3>> corners;
+    std::vector<std::size_t> ids;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, g), g))
+    {
+      const auto& p = get(vpm, v);
+      corners.push_back({CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
+      ids.push_back(static_cast<std::size_t>(get(vim, v)));
+    }
+    double face_area = 0;
+    for(std::size_t k = 1; k + 1 < corners.size(); ++k)
+    {
+      double u[3], w[3];
+      for(int c = 0; c < 3; ++c)
+      {
+        u[c] = corners[k][c] - corners[0][c];
+        w[c] = corners[k + 1][c] - corners[0][c];
+      }
+      face_area += 0.5 * std::sqrt(std::pow(u[1] * w[2] - u[2] * w[1], 2) +
+                                   std::pow(u[2] * w[0] - u[0] * w[2], 2) +
+                                   std::pow(u[0] * w[1] - u[1] * w[0], 2));
+    }
+    for(std::size_t i : ids)
+      area[i] += face_area / static_cast<double>(ids.size());
+  }
+  return area;
+}
+
+} // namespace internal
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// Writes to `field` the normalised integral of the geodesic distance of Hilaga et al.
+/// ("Topology matching for fully automatic similarity estimation of 3D shapes", 2001):
+/// mu(v) = sum over base vertices b of area(b) * g(v, b), then
+/// (mu - min mu) / (max mu - min mu) within each connected component. It is smallest at
+/// the middle of the shape and largest at the tips of its limbs, does not depend on a
+/// chosen source, and does not change when the mesh is rotated or moved.
+///
+/// The base vertices are picked by farthest-point sampling over the geodesic distance
+/// (the first one per component by a farthest-point search); area(b) is the surface area
+/// of b's geodesic Voronoi cell (the vertices nearer to b than to any other base vertex,
+/// each weighing a third of its faces' area).
+///
+/// \tparam FaceGraph a model of `FaceListGraph`.
+/// \tparam VertexScalarMap a writable vertex property map with a floating-point value.
+/// \param np optional named parameters among:
+///   - `number_of_base_vertices` (package parameter): k, the number of base vertices, in
+///     [1, 100000] (default: 50); raised to the number of connected components if lower
+///     and capped at the number of vertices. More is smoother and costs more.
+///   - the named parameters of `geodesic_distances()` (`vertex_point_map`, `geom_traits`,
+///     `vertex_index_map`, `edge_weight_map`).
+///
+/// \pre as `geodesic_distances()`.
+/// \throws std::invalid_argument as `geodesic_distances()`, or when k is out of range.
+///
+/// \b Complexity: O(k (V + E) log V) time (k + 1 Dijkstra runs) and O(k V) memory.
+template <typename FaceGraph, typename VertexScalarMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+void integral_geodesic_mapping_function(const FaceGraph& mesh, VertexScalarMap field,
+                                        const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
+
+  const std::size_t requested =
+      choose_parameter(get_parameter(np, internal_np::number_of_base_vertices_tag), std::size_t(50));
+  if(requested < 1 || requested > 100000)
+    throw std::invalid_argument("integral_geodesic_mapping_function: number_of_base_vertices "
+                                "must be in [1, 100000], got " + std::to_string(requested));
+  if(num_vertices(mesh) == 0)
+    throw std::invalid_argument("integral_geodesic_mapping_function: the mesh has no vertices");
+
+  const auto vim = CGAL::get_initialized_vertex_index_map(mesh, np);
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, mesh));
+  auto index = [&](vertex_descriptor v) { return static_cast<std::size_t>(get(vim, v)); };
+  const internal::Vertex_components components = internal::vertex_components(mesh, vim);
+  const std::size_t n = static_cast<std::size_t>(num_vertices(mesh));
+
+  // Farthest-point sampling: each new base vertex is the vertex farthest from all others.
+  std::vector<std::vector<double>> base_fields;
+  std::vector<double> nearest(n, std::numeric_limits<double>::infinity());
+  std::vector<std::size_t> nearest_base(n, 0);
+  auto add_base = [&](vertex_descriptor b) {
+    base_fields.push_back(internal::distance_field(mesh, vim, b, np));
+    const std::vector<double>& d = base_fields.back();
+    for(vertex_descriptor v : vertices(mesh))
+      if(d[index(v)] < nearest[index(v)])
+      {
+        nearest[index(v)] = d[index(v)];
+        nearest_base[index(v)] = base_fields.size() - 1;
+      }
+  };
+  for(vertex_descriptor b : internal::diameter_end_per_component(mesh, vim, components, np))
+    add_base(b);
+  const std::size_t k = std::min(std::max(requested, components.count), n);
+  while(base_fields.size() < k)
+  {
+    vertex_descriptor next = *vertices(mesh).begin();
+    double farthest = -1;
+    for(vertex_descriptor v : vertices(mesh))
+      if(nearest[index(v)] > farthest)
+      {
+        farthest = nearest[index(v)];
+        next = v;
+      }
+    if(farthest <= 0) // every vertex is a base vertex already
+      break;
+    add_base(next);
+  }
+
+  // Voronoi areas of the base vertices, then the integral.
+  const std::vector<double> area = internal::vertex_areas(mesh, vpm, vim);
+  std::vector<double> cell_area(base_fields.size(), 0.0);
+  for(vertex_descriptor v : vertices(mesh))
+    cell_area[nearest_base[index(v)]] += area[index(v)];
+  std::vector<double> mu(n, 0.0);
+  for(std::size_t b = 0; b < base_fields.size(); ++b)
+    for(vertex_descriptor v : vertices(mesh))
+      if(std::isfinite(base_fields[b][index(v)]))
+        mu[index(v)] += cell_area[b] * base_fields[b][index(v)];
+
+  // Normalised per component.
+  std::vector<double> low(components.count, std::numeric_limits<double>::infinity());
+  std::vector<double> high(components.count, -std::numeric_limits<double>::infinity());
+  for(vertex_descriptor v : vertices(mesh))
+  {
+    const std::size_t c = components.component_of[index(v)];
+    low[c] = std::min(low[c], mu[index(v)]);
+    high[c] = std::max(high[c], mu[index(v)]);
+  }
+  for(vertex_descriptor v : vertices(mesh))
+  {
+    const std::size_t c = components.component_of[index(v)];
+    put(field, v, high[c] > low[c] ? (mu[index(v)] - low[c]) / (high[c] - low[c]) : 0.0);
+  }
+}
+
+} // namespace Geodesic_skeleton
+} // namespace CGAL
+
+#endif // CGAL_GEODESIC_SKELETON_INTEGRAL_GEODESIC_MAPPING_FUNCTION_H
