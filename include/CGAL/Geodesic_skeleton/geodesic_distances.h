@@ -225,7 +225,13 @@ void geodesic_distances(const FaceGraph& g, const SourceVertices& sources,
 /// included, in that order) to `out`, and returns its length. The search stops as soon as
 /// `target` is settled, so a near target is found fast.
 ///
+/// \tparam FaceGraph a model of `FaceListGraph`, as for `geodesic_distances()`.
 /// \tparam OutputIterator an output iterator accepting vertex descriptors.
+/// \tparam NamedParameters a sequence of named parameters.
+/// \param g the mesh.
+/// \param source the first vertex of the path.
+/// \param target the last vertex of the path.
+/// \param out receives the vertices of the path, from `source` to `target`.
 /// \param np the named parameters of `geodesic_distances()` (`vertex_point_map`,
 ///        `geom_traits`, `vertex_index_map`, `edge_weight_map`).
 /// \returns the length of the path, or `std::numeric_limits<double>::infinity()` when
@@ -275,10 +281,16 @@ double shortest_path(const FaceGraph& g,
 /// Finds the vertex of `g` whose geodesic distance (as computed by `geodesic_distances()`)
 /// to the nearest of `sources` is largest, among the vertices that a path reaches.
 ///
+/// \tparam FaceGraph a model of `FaceListGraph`, as for `geodesic_distances()`.
+/// \tparam SourceVertices either one `boost::graph_traits<FaceGraph>::vertex_descriptor`
+///         or a range of them.
+/// \tparam NamedParameters a sequence of named parameters.
+/// \param g the mesh.
+/// \param sources the source vertex, or the source vertices.
+/// \param np the named parameters of `geodesic_distances()`.
 /// \returns the vertex and its distance. Ties are broken by the smallest vertex index, so
 ///          the answer is deterministic. When only the sources are reachable, a source is
 ///          returned with distance 0.
-/// \param np the named parameters of `geodesic_distances()`.
 /// \pre and \throws as `geodesic_distances()`.
 ///
 /// \b Complexity: O((V + E) log V) time and O(V) extra memory.

@@ -32,6 +32,8 @@ namespace Geodesic_skeleton {
 ///
 /// \tparam FaceGraph a model of `FaceListGraph`.
 /// \tparam VertexScalarMap a writable vertex property map with a floating-point value.
+/// \param mesh the mesh.
+/// \param field receives the value of the mapping function at every vertex.
 /// \param np optional named parameters among:
 ///   - `source_vertices` (package parameter): a range of vertex descriptors, the sources
 ///     (default: one per component, found as said above); every component must hold one.

@@ -79,6 +79,8 @@ std::vector<double> vertex_areas(const FaceGraph& g, VertexPointMap vpm, VertexI
 ///
 /// \tparam FaceGraph a model of `FaceListGraph`.
 /// \tparam VertexScalarMap a writable vertex property map with a floating-point value.
+/// \param mesh the mesh.
+/// \param field receives the value of the mapping function at every vertex.
 /// \param np optional named parameters among:
 ///   - `number_of_base_vertices` (package parameter): k, the number of base vertices, in
 ///     [1, 100000] (default: 50); raised to the number of connected components if lower

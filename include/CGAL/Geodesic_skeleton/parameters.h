@@ -28,6 +28,18 @@ namespace internal_np {
 
 /// \ingroup PkgGeodesicSkeletonRef
 /// Named parameters: CGAL's own (re-exported) and the package's new names.
+///
+/// CGAL's names (`vertex_point_map`, `vertex_index_map`, `geom_traits`, ...) are usable from
+/// this namespace. The package's own names are functions of this namespace that take the
+/// value and return a one-element pack, `CGAL::Named_function_parameters<T, Tag>`; among
+/// them:
+/// - `edge_weight_map(map)`: a readable edge property map of finite, non-negative lengths
+///   (read by `geodesic_distances()`, `shortest_path()` and `farthest_vertex()`).
+/// - `vertex_predecessor_map(map)`: a writable vertex property map that receives the
+///   predecessor of every vertex on a shortest path (read by `geodesic_distances()`).
+///
+/// Each function documents the names it reads, with their types and defaults. A pack of the
+/// package's names and a pack of CGAL's names are joined with `combine()`.
 namespace parameters {
 
 using namespace CGAL::parameters; // vertex_point_map, vertex_index_map, geom_traits, ...
@@ -67,7 +79,11 @@ auto append_pack(const CGAL::Named_function_parameters<T, Tag, Base>& first, con
 /// Joins two named-parameter packs into one. When a name appears in both, the value in
 /// `first` wins (lookups stop at the first match).
 ///
-/// Example: `combine(parameters::resolution(128), parameters::vertex_point_map(vpm))`.
+/// Example: `combine(parameters::edge_weight_map(lengths), parameters::vertex_point_map(vpm))`.
+///
+/// \param first a pack: the package's names or CGAL's.
+/// \param second another pack, of either kind.
+/// \returns one pack that holds the settings of `first`, then those of `second`.
 template <typename T1, typename Tag1, typename Base1, typename T2, typename Tag2, typename Base2>
 auto combine(const CGAL::Named_function_parameters<T1, Tag1, Base1>& first,
              const CGAL::Named_function_parameters<T2, Tag2, Base2>& second)
@@ -75,7 +91,12 @@ auto combine(const CGAL::Named_function_parameters<T1, Tag1, Base1>& first,
   return internal::append_pack(first, second);
 }
 
-/// Joins more than two packs, left to right.
+/// Joins more than two packs, left to right: `combine(combine(first, second), rest...)`.
+///
+/// \param first the first pack (its settings win over the later ones).
+/// \param second the second pack.
+/// \param rest the other packs.
+/// \returns one pack that holds the settings of every pack, in order.
 template <typename Pack1, typename Pack2, typename... Packs>
 auto combine(const Pack1& first, const Pack2& second, const Packs&... rest)
 {

@@ -41,7 +41,7 @@ struct Reeb_graph_node
   /// Index of the interval of the field, from 0 (lowest values) to `number_of_intervals - 1`.
   std::size_t interval = 0;
   /// The interval of the field that the node covers: [`level_min`, `level_max`].
-  double level_min = 0, level_max = 0;
+  double level_min = 0, level_max = 0; ///< The upper end of the node's interval of the field.
   /// The centroid of the node's mesh vertices.
   Point point;
   /// The mesh vertices of the node.
