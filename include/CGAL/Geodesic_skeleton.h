@@ -11,4 +11,16 @@
 #include <CGAL/Geodesic_skeleton/parameters.h>
 #include <CGAL/Geodesic_skeleton/geodesic_distances.h>
 
+// The voxel medial axis.
+#include <CGAL/Geodesic_skeleton/Voxel_key.h>
+#include <CGAL/Geodesic_skeleton/Voxel_frame.h>
+#include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
+#include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
+#include <CGAL/Geodesic_skeleton/voxelize.h>
+#include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
+#include <CGAL/Geodesic_skeleton/distance_transform.h>
+#include <CGAL/Geodesic_skeleton/thin.h>
+#include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
+#include <CGAL/Geodesic_skeleton/to_graph.h>
+
 #endif // CGAL_GEODESIC_SKELETON_H

@@ -13,3 +13,8 @@ CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(edge_weight_map)
 // geodesic_mapping_function, integral_geodesic_mapping_function
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(source_vertices)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(number_of_base_vertices)
+
+// voxel medial axis: voxelize, distance_transform, thin, to_graph
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(resolution)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(memory_limit)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(fill_holes)

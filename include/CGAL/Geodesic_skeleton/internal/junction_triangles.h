@@ -1,0 +1,190 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_GEODESIC_SKELETON_INTERNAL_JUNCTION_TRIANGLES_H
+#define CGAL_GEODESIC_SKELETON_INTERNAL_JUNCTION_TRIANGLES_H
+
+#include <CGAL/Geodesic_skeleton/Voxel_key.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Geodesic_skeleton {
+namespace internal {
+
+// Rank over Z/2 of a set of rows (bit vectors of `words` 64-bit words), by elimination.
+inline std::size_t rank_mod2(std::vector<std::vector<std::uint64_t>> rows)
+{
+  std::size_t rank = 0;
+  if(rows.empty())
+    return 0;
+  const std::size_t bits = rows[0].size() * 64;
+  for(std::size_t bit = 0; bit < bits && rank < rows.size(); ++bit)
+  {
+    const std::size_t w = bit / 64;
+    const std::uint64_t m = std::uint64_t(1) << (bit % 64);
+    std::size_t pivot = rank;
+    while(pivot < rows.size() && !(rows[pivot][w] & m))
+      ++pivot;
+    if(pivot == rows.size())
+      continue;
+    std::swap(rows[pivot], rows[rank]);
+    for(std::size_t r = 0; r < rows.size(); ++r)
+      if(r != rank && (rows[r][w] & m))
+        for(std::size_t k = 0; k < rows[r].size(); ++k)
+          rows[r][k] ^= rows[rank][k];
+    ++rank;
+  }
+  return rank;
+}
+
+// The edges of the 26-adjacency graph of a voxel skeleton make little triangles (and
+// tetrahedra) wherever three voxels are pairwise adjacent, at junctions and on diagonal
+// steps. Viewed as the clique complex of the graph, which has the homotopy type of the
+// union of the voxels' closed cubes (nerve theorem; boxes meeting pairwise meet all
+// together), the skeleton's number of independent cycles is
+//   b1 = (E - V + C) - rank(boundaries of the triangles).
+// This removes edges, the longest first (corner before edge before face diagonals), each
+// only when it kills exactly one dimension of triangle boundaries, until no triangle is
+// left: the graph then has no triangle and its cycle rank is b1, the true number of
+// tunnels. Triangles sharing no edge are independent, so the work is done per cluster of
+// edge-sharing triangles, which are tiny.
+//
+// `keys[v]` is the voxel of node v, `edges` are pairs of node indices (first < second).
+// Returns, per edge, whether it is kept.
+inline std::vector<bool> remove_junction_triangles(const std::vector<Voxel_key>& keys,
+                                                   const std::vector<std::pair<int, int>>& edges)
+{
+  const std::size_t n = keys.size();
+  std::vector<bool> kept(edges.size(), true);
+  std::vector<std::vector<std::pair<int, int>>> around(n); // (neighbour, edge)
+  for(std::size_t e = 0; e < edges.size(); ++e)
+  {
+    around[edges[e].first].emplace_back(edges[e].second, int(e));
+    around[edges[e].second].emplace_back(edges[e].first, int(e));
+  }
+  for(auto& a : around)
+    std::sort(a.begin(), a.end());
+
+  // Triangles a < b < c, as triples of edge ids.
+  std::vector<std::array<int, 3>> triangles;
+  for(std::size_t e = 0; e < edges.size(); ++e)
+  {
+    const int a = edges[e].first, b = edges[e].second;
+    auto i = around[a].begin(), j = around[b].begin();
+    while(i != around[a].end() && j != around[b].end())
+    {
+      if(i->first < j->first) ++i;
+      else if(j->first < i->first) ++j;
+      else
+      {
+        if(i->first > b)
+          triangles.push_back({int(e), i->second, j->second});
+        ++i;
+        ++j;
+      }
+    }
+  }
+  if(triangles.empty())
+    return kept;
+
+  // Clusters of edge-sharing triangles (union-find over edges).
+  std::vector<int> parent(edges.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int x) {
+    while(parent[x] != x)
+      x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for(const auto& t : triangles)
+  {
+    parent[find(t[1])] = find(t[0]);
+    parent[find(t[2])] = find(t[0]);
+  }
+  std::vector<std::vector<int>> cluster_triangles(edges.size());
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+    cluster_triangles[find(triangles[t][0])].push_back(int(t));
+
+  auto squared_length = [&](int e) {
+    const Voxel_key& p = keys[edges[e].first];
+    const Voxel_key& q = keys[edges[e].second];
+    return (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y) + (p.z - q.z) * (p.z - q.z);
+  };
+
+  for(const std::vector<int>& cluster : cluster_triangles)
+  {
+    if(cluster.empty())
+      continue;
+    // Local numbering of the cluster's edges.
+    std::vector<int> local_edges;
+    for(int t : cluster)
+      for(int e : triangles[t])
+        local_edges.push_back(e);
+    std::sort(local_edges.begin(), local_edges.end());
+    local_edges.erase(std::unique(local_edges.begin(), local_edges.end()), local_edges.end());
+    const std::size_t words = (local_edges.size() + 63) / 64;
+    auto local = [&](int e) {
+      return std::size_t(std::lower_bound(local_edges.begin(), local_edges.end(), e) -
+                         local_edges.begin());
+    };
+    auto boundaries = [&](const std::vector<int>& alive) {
+      std::vector<std::vector<std::uint64_t>> rows;
+      for(int t : alive)
+      {
+        std::vector<std::uint64_t> row(words, 0);
+        for(int e : triangles[t])
+        {
+          const std::size_t l = local(e);
+          row[l / 64] |= std::uint64_t(1) << (l % 64);
+        }
+        rows.push_back(std::move(row));
+      }
+      return rows;
+    };
+
+    std::vector<int> alive = cluster;
+    std::size_t rank = rank_mod2(boundaries(alive));
+    std::vector<int> candidates = local_edges;
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [&](int a, int b) { return squared_length(a) > squared_length(b); });
+    for(int e : candidates)
+    {
+      if(alive.empty())
+        break;
+      std::vector<int> without;
+      for(int t : alive)
+        if(triangles[t][0] != e && triangles[t][1] != e && triangles[t][2] != e)
+          without.push_back(t);
+      if(without.size() == alive.size())
+        continue; // in no remaining triangle
+      const std::size_t r = rank_mod2(boundaries(without));
+      if(rank - r != 1)
+        continue;
+      kept[e] = false;
+      alive.swap(without);
+      rank = r;
+    }
+    // Not expected: break what is left by its longest edges (may change the cycle count).
+    for(int t : alive)
+    {
+      const auto& tri = triangles[t];
+      if(kept[tri[0]] && kept[tri[1]] && kept[tri[2]])
+        kept[*std::max_element(tri.begin(), tri.end(), [&](int a, int b) {
+          return squared_length(a) < squared_length(b);
+        })] = false;
+    }
+  }
+  return kept;
+}
+
+} // namespace internal
+} // namespace Geodesic_skeleton
+} // namespace CGAL
+
+#endif // CGAL_GEODESIC_SKELETON_INTERNAL_JUNCTION_TRIANGLES_H

@@ -1,0 +1,109 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_GEODESIC_SKELETON_INTERNAL_PRINCIPAL_FRAME_H
+#define CGAL_GEODESIC_SKELETON_INTERNAL_PRINCIPAL_FRAME_H
+
+#include <CGAL/Geodesic_skeleton/internal/triangle_box_overlap.h>
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Geodesic_skeleton {
+namespace internal {
+
+using Triangle3 = std::array<Vec3, 3>;
+
+// The principal axes of a triangle soup seen as a uniform surface (every point of every
+// triangle weighs the same), so they do not depend on the tessellation, nor on a rigid
+// motion of the soup: the centroid, then the eigenvectors of the covariance by decreasing
+// eigenvalue. Each of the first two axes points to the side where the third moment of the
+// surface is positive (the "heavier tail"); the third is their cross product, so the frame
+// is right-handed and moves with the mesh.
+struct Principal_frame
+{
+  Vec3 centroid;
+  std::array<Vec3, 3> axes;
+};
+
+inline Principal_frame principal_frame(const std::vector<Triangle3>& triangles, const char* caller)
+{
+  double area_sum = 0;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  std::vector<double> areas(triangles.size());
+  for(std::size_t i = 0; i < triangles.size(); ++i)
+  {
+    const Triangle3& t = triangles[i];
+    const double area = 0.5 * std::sqrt(dot3(cross3(sub(t[1], t[0]), sub(t[2], t[0])),
+                                             cross3(sub(t[1], t[0]), sub(t[2], t[0]))));
+    areas[i] = area;
+    area_sum += area;
+    for(int c = 0; c < 3; ++c)
+      centroid[c] += area * (t[0][c] + t[1][c] + t[2][c]) / 3.;
+  }
+  if(!(area_sum > 0) || !std::isfinite(area_sum))
+    throw std::invalid_argument(std::string(caller) +
+                                ": the mesh has zero area (every face is degenerate)");
+  centroid /= area_sum;
+
+  // Second moments about the centroid: E[x x^T] over a triangle is (sum_i v_i v_i^T + s s^T)/12
+  // with s the sum of its vertices.
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for(std::size_t i = 0; i < triangles.size(); ++i)
+  {
+    Eigen::Vector3d v[3], s = Eigen::Vector3d::Zero();
+    for(int j = 0; j < 3; ++j)
+    {
+      v[j] = Eigen::Vector3d(triangles[i][j][0], triangles[i][j][1], triangles[i][j][2]) - centroid;
+      s += v[j];
+    }
+    covariance += areas[i] / 12. *
+                  (v[0] * v[0].transpose() + v[1] * v[1].transpose() + v[2] * v[2].transpose() +
+                   s * s.transpose());
+  }
+  covariance /= area_sum;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+  if(solver.info() != Eigen::Success)
+    throw std::runtime_error(std::string(caller) + ": the principal axes could not be computed");
+
+  Principal_frame frame;
+  frame.centroid = Vec3{centroid[0], centroid[1], centroid[2]};
+  for(int a = 0; a < 2; ++a)
+  {
+    Eigen::Vector3d axis = solver.eigenvectors().col(2 - a).normalized();
+    // Third moment along the axis: E[t^3] over a triangle is h3(t0, t1, t2) / 10, the
+    // complete homogeneous symmetric polynomial of degree 3 of its vertex values.
+    double third_moment = 0;
+    for(std::size_t i = 0; i < triangles.size(); ++i)
+    {
+      double t[3];
+      for(int j = 0; j < 3; ++j)
+        t[j] = (Eigen::Vector3d(triangles[i][j][0], triangles[i][j][1], triangles[i][j][2]) -
+                centroid).dot(axis);
+      const double h3 = t[0] * t[0] * t[0] + t[1] * t[1] * t[1] + t[2] * t[2] * t[2] +
+                        t[0] * t[0] * (t[1] + t[2]) + t[1] * t[1] * (t[0] + t[2]) +
+                        t[2] * t[2] * (t[0] + t[1]) + t[0] * t[1] * t[2];
+      third_moment += areas[i] * h3 / 10.;
+    }
+    if(third_moment < 0)
+      axis = -axis;
+    frame.axes[a] = Vec3{axis[0], axis[1], axis[2]};
+  }
+  frame.axes[2] = cross3(frame.axes[0], frame.axes[1]);
+  const double norm = std::sqrt(dot3(frame.axes[2], frame.axes[2]));
+  for(double& c : frame.axes[2])
+    c /= norm;
+  return frame;
+}
+
+} // namespace internal
+} // namespace Geodesic_skeleton
+} // namespace CGAL
+
+#endif // CGAL_GEODESIC_SKELETON_INTERNAL_PRINCIPAL_FRAME_H

@@ -1,0 +1,249 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_GEODESIC_SKELETON_TO_GRAPH_H
+#define CGAL_GEODESIC_SKELETON_TO_GRAPH_H
+
+/// \file to_graph.h
+/// A one-voxel-thick voxel skeleton as a curve-skeleton graph, with the mesh vertices
+/// mapped to its vertices.
+
+#include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
+#include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
+#include <CGAL/Geodesic_skeleton/Voxel_key.h>
+#include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
+#include <CGAL/Geodesic_skeleton/internal/junction_triangles.h>
+#include <CGAL/Geodesic_skeleton/parameters.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <boost/graph/adjacency_list.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Geodesic_skeleton {
+namespace internal {
+
+// Labels every voxel of the solid of `distances` (and the skeleton's own voxels) with the
+// skeleton node whose 26-connected breadth-first wave through the solid reaches it first:
+// the nearest skeleton voxel along paths inside the shape. -1 where no wave arrives.
+inline std::vector<std::int32_t> nearest_node_inside(const Voxel_distance_field& distances,
+                                                     const Grid_layout& layout,
+                                                     const std::vector<Voxel_key>& nodes)
+{
+  std::vector<std::int32_t> label(layout.volume(), -1);
+  std::vector<std::uint32_t> queue;
+  queue.reserve(nodes.size());
+  for(std::size_t v = 0; v < nodes.size(); ++v)
+    if(layout.box.contains(nodes[v]))
+    {
+      const std::size_t i = layout.index(nodes[v]);
+      if(label[i] < 0)
+      {
+        label[i] = std::int32_t(v);
+        queue.push_back(std::uint32_t(i));
+      }
+    }
+  const auto& values = distances.values();
+  const auto offsets = layout.neighbour_offsets();
+  for(std::size_t head = 0; head < queue.size(); ++head)
+  {
+    const std::size_t i = queue[head];
+    const bool border = layout.on_border(i);
+    const Voxel_key k = border ? layout.key(i) : Voxel_key{};
+    for(int b = 0; b < 26; ++b)
+    {
+      if(border && !layout.box.contains(k + neighbourhood_26()[b]))
+        continue;
+      const std::size_t j = std::size_t(std::ptrdiff_t(i) + offsets[b]);
+      if(label[j] < 0 && values[j] != 0)
+      {
+        label[j] = label[i];
+        queue.push_back(std::uint32_t(j));
+      }
+    }
+  }
+  return label;
+}
+
+} // namespace internal
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// Converts a one-voxel-thick voxel skeleton (the output of `thin()`) into a curve-skeleton
+/// graph: one graph vertex per skeleton voxel, with the medial radius there; an edge
+/// between 26-adjacent voxels, except the shortcuts that would make little triangles; and
+/// every vertex of `mesh` mapped to exactly one graph vertex.
+///
+/// <b>Points.</b> A graph vertex is at its voxel's centre, in the mesh's own coordinates.
+/// Where the shape is thinner than about two voxels (a horn, an ear, a tail tip), the
+/// skeleton must run through surface voxels to stay connected, and such a centre may lie
+/// outside the mesh by up to half a voxel diagonal; raise the resolution to resolve them.
+///
+/// <b>Edges.</b> Three pairwise 26-adjacent voxels make a triangle of the adjacency graph
+/// that is no cycle of the shape. Edges are removed, longest first (a corner diagonal before
+/// an edge diagonal before a face link), each only when it fills exactly one independent
+/// triangle, until no triangle is left: the graph has then no triangle, the same connected
+/// components as the voxels, and exactly as many independent cycles as the voxel skeleton
+/// has tunnels (its first Betti number, with the voxels as closed unit cubes).
+///
+/// <b>Mesh vertices.</b> A mesh vertex maps to the skeleton voxel that a breadth-first
+/// wave from all skeleton voxels, through the solid of `distances` (26-connected), reaches
+/// first at the vertex's voxel: a nearest skeleton voxel along a path inside the shape, so a
+/// vertex of a leg maps to the leg's skeleton, not to the nearest point of the other leg.
+/// A vertex whose voxel the wave does not reach (outside the solid) takes a reached
+/// 26-neighbour voxel's label, else the Euclidean nearest skeleton voxel.
+///
+/// \tparam VoxelSet a model of `VoxelSet`.
+/// \tparam FaceGraph a model of `FaceListGraph`; only its vertices and points are read.
+/// \tparam Graph a `boost::adjacency_list` with `vecS` vertices, such as
+///         `Curve_skeleton<Point, vertex_descriptor>`, whose vertex bundle has members
+///         `point` (constructible from three `double`s), `radius` (`double`), `vertices`
+///         (a container of `FaceGraph` vertex descriptors with `push_back`) and `voxel`.
+/// \param skeleton the voxel skeleton (its frame maps voxels to the mesh's coordinates).
+/// \param distances the distance field of the solid the skeleton was thinned from
+///        (`distance_transform()`); it gives the radii and the solid for the mapping.
+/// \param mesh the mesh whose vertices are mapped.
+/// \param graph receives the skeleton (cleared first). Vertices are in increasing
+///        `(z, y, x)` voxel order.
+/// \param np optional named parameters among:
+///   - `vertex_point_map`: the positions of the mesh vertices (default:
+///     `get(CGAL::vertex_point, mesh)`).
+///   - `memory_limit` (package parameter, `double`, bytes): the most memory the function
+///     may allocate (default: `default_voxel_memory_limit`, 2 GiB); the need, 4 bytes per
+///     voxel of the field's box and of the skeleton's box, is checked before allocating.
+///
+/// \pre `skeleton` is not empty, and has the frame of `distances`.
+/// \throws std::invalid_argument when `skeleton` is empty or a mesh vertex has a
+///      non-finite coordinate.
+/// \throws std::length_error when the work arrays would need more than `memory_limit`.
+///
+/// \b Complexity: O(S + B + M) time for S skeleton voxels, B voxels in the field's box and
+///    M mesh vertices (plus the rare triangle clusters, each of a few voxels).
+template <typename VoxelSet, typename FaceGraph, typename Graph,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+void to_graph(const VoxelSet& skeleton, const Voxel_distance_field& distances,
+              const FaceGraph& mesh, Graph& graph,
+              const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using Vertex_bundle = typename boost::vertex_bundle_type<Graph>::type;
+  using Point = decltype(Vertex_bundle::point);
+  const char* caller = "to_graph";
+  const double memory_limit = choose_parameter(get_parameter(np, internal_np::memory_limit_tag),
+                                               default_voxel_memory_limit);
+
+  const Voxel_box skeleton_box = internal::require_nonempty_box(skeleton, 1, caller);
+  const internal::Grid_layout nodes_layout(skeleton_box);
+  const internal::Grid_layout solid_layout(distances.box());
+  {
+    std::ostringstream what;
+    what << "the graph of a skeleton in a box of " << nodes_layout.nx << " x "
+         << nodes_layout.ny << " x " << nodes_layout.nz << " voxels";
+    internal::require_memory(4. * double(nodes_layout.volume() + solid_layout.volume()),
+                             memory_limit, nodes_layout.volume(), caller, what.str());
+  }
+
+  // Nodes, in increasing voxel order.
+  std::vector<Voxel_key> nodes;
+  nodes.reserve(skeleton.size());
+  skeleton.for_each([&](const Voxel_key& k) { nodes.push_back(k); });
+  std::sort(nodes.begin(), nodes.end());
+  std::vector<std::int32_t> node_at(nodes_layout.volume(), -1);
+  for(std::size_t v = 0; v < nodes.size(); ++v)
+    node_at[nodes_layout.index(nodes[v])] = std::int32_t(v);
+
+  // 26-adjacency edges, each once (the 13 offsets after the centre in neighbourhood order).
+  std::vector<std::pair<int, int>> edges;
+  const auto offsets = nodes_layout.neighbour_offsets();
+  for(std::size_t v = 0; v < nodes.size(); ++v)
+  {
+    const std::size_t i = nodes_layout.index(nodes[v]);
+    for(int b = 13; b < 26; ++b)
+    {
+      const std::int32_t w = node_at[std::size_t(std::ptrdiff_t(i) + offsets[b])];
+      if(w >= 0)
+        edges.emplace_back(std::min(int(v), int(w)), std::max(int(v), int(w)));
+    }
+  }
+  const std::vector<bool> kept = internal::remove_junction_triangles(nodes, edges);
+
+  graph.clear();
+  const Voxel_frame& frame = skeleton.frame();
+  for(const Voxel_key& k : nodes)
+  {
+    const auto v = add_vertex(graph);
+    graph[v].point = frame.template centre_point<Point>(k);
+    graph[v].radius = distances.radius(k);
+    graph[v].voxel = k;
+  }
+  for(std::size_t e = 0; e < edges.size(); ++e)
+    if(kept[e])
+      add_edge(edges[e].first, edges[e].second, graph);
+
+  // Mesh vertices.
+  const std::vector<std::int32_t> label = internal::nearest_node_inside(distances, solid_layout, nodes);
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, mesh));
+  for(auto mv : vertices(mesh))
+  {
+    const auto& p = get(vpm, mv);
+    const Voxel_frame::Vector q{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+    if(!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
+      throw std::invalid_argument("to_graph: a mesh vertex has a non-finite coordinate");
+    const Voxel_frame::Vector g = frame.to_grid(q);
+    std::int32_t best = -1;
+    if(std::abs(g[0]) < 1e9 && std::abs(g[1]) < 1e9 && std::abs(g[2]) < 1e9)
+    {
+      const Voxel_key k = frame.voxel_of(q);
+      if(distances.box().contains(k))
+        best = label[solid_layout.index(k)];
+      double best_d2 = std::numeric_limits<double>::infinity();
+      if(best < 0)
+        for(const Voxel_key& o : neighbourhood_26())
+        {
+          const Voxel_key n = k + o;
+          if(!distances.box().contains(n) || label[solid_layout.index(n)] < 0)
+            continue;
+          const double d2 = (g[0] - n.x - 0.5) * (g[0] - n.x - 0.5) +
+                            (g[1] - n.y - 0.5) * (g[1] - n.y - 0.5) +
+                            (g[2] - n.z - 0.5) * (g[2] - n.z - 0.5);
+          if(d2 < best_d2)
+          {
+            best_d2 = d2;
+            best = label[solid_layout.index(n)];
+          }
+        }
+    }
+    if(best < 0) // far from the solid: the Euclidean nearest skeleton voxel
+    {
+      double best_d2 = std::numeric_limits<double>::infinity();
+      for(std::size_t v = 0; v < nodes.size(); ++v)
+      {
+        const double d2 = (g[0] - nodes[v].x - 0.5) * (g[0] - nodes[v].x - 0.5) +
+                          (g[1] - nodes[v].y - 0.5) * (g[1] - nodes[v].y - 0.5) +
+                          (g[2] - nodes[v].z - 0.5) * (g[2] - nodes[v].z - 0.5);
+        if(d2 < best_d2)
+        {
+          best_d2 = d2;
+          best = std::int32_t(v);
+        }
+      }
+    }
+    graph[std::size_t(best)].vertices.push_back(mv);
+  }
+}
+
+} // namespace Geodesic_skeleton
+} // namespace CGAL
+
+#endif // CGAL_GEODESIC_SKELETON_TO_GRAPH_H

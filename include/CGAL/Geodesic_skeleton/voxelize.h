@@ -1,0 +1,366 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_GEODESIC_SKELETON_VOXELIZE_H
+#define CGAL_GEODESIC_SKELETON_VOXELIZE_H
+
+/// \file voxelize.h
+/// The solid interior of a mesh as a set of voxels, in a grid aligned with the mesh's
+/// principal axes.
+
+#include <CGAL/Geodesic_skeleton/Voxel_frame.h>
+#include <CGAL/Geodesic_skeleton/Voxel_key.h>
+#include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
+#include <CGAL/Geodesic_skeleton/internal/principal_frame.h>
+#include <CGAL/Geodesic_skeleton/internal/triangle_box_overlap.h>
+#include <CGAL/Geodesic_skeleton/parameters.h>
+
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Geodesic_skeleton {
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// The default of the `resolution` named parameter of `voxelize()`: voxels along the
+/// longest principal axis of the mesh (see benchmark/README.md for the measurement behind
+/// it).
+constexpr int default_voxel_resolution = 64;
+
+namespace internal {
+
+enum Voxel_label : std::uint8_t { EMPTY = 0, SURFACE = 1, OUTSIDE = 2 };
+
+// The triangles of the faces of `mesh` (a face with more than three vertices is split into
+// a fan), with finite coordinates checked.
+template <typename FaceGraph, typename VertexPointMap>
+std::vector<Triangle3> mesh_triangles(const FaceGraph& mesh, VertexPointMap vpm, const char* caller)
+{
+  std::vector<Triangle3> triangles;
+  triangles.reserve(static_cast<std::size_t>(num_faces(mesh)));
+  std::vector<Vec3> corners;
+  for(auto f : faces(mesh))
+  {
+    corners.clear();
+    for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+    {
+      const auto& p = get(vpm, v);
+      const Vec3 q{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+      if(!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
+        throw std::invalid_argument(std::string(caller) +
+                                    ": a vertex has a non-finite coordinate (NaN or infinite)");
+      corners.push_back(q);
+    }
+    for(std::size_t i = 1; i + 1 < corners.size(); ++i)
+      triangles.push_back(Triangle3{corners[0], corners[i], corners[i + 1]});
+  }
+  if(triangles.empty())
+    throw std::invalid_argument(std::string(caller) + ": the mesh has no faces");
+  return triangles;
+}
+
+// Closes every hole of the mesh (a cycle of border halfedges) by a fan of triangles from
+// the centroid of its vertices, appended to `triangles`; returns the number of holes. The
+// fan may self-intersect or cross the mesh: it is only rasterised, never used as a surface.
+template <typename FaceGraph, typename VertexPointMap>
+std::size_t close_holes(const FaceGraph& mesh, VertexPointMap vpm, std::vector<Triangle3>& triangles)
+{
+  using halfedge_descriptor = typename boost::graph_traits<FaceGraph>::halfedge_descriptor;
+  std::vector<halfedge_descriptor> border;
+  for(halfedge_descriptor h : halfedges(mesh))
+    if(is_border(h, mesh))
+      border.push_back(h);
+  std::sort(border.begin(), border.end());
+  std::vector<bool> done(border.size(), false);
+  auto position = [&](halfedge_descriptor h) {
+    return std::size_t(std::lower_bound(border.begin(), border.end(), h) - border.begin());
+  };
+  auto point = [&](halfedge_descriptor h) {
+    const auto& p = get(vpm, target(h, mesh));
+    return Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+  };
+  std::size_t holes = 0;
+  std::vector<Vec3> loop;
+  for(std::size_t start = 0; start < border.size(); ++start)
+  {
+    if(done[start])
+      continue;
+    loop.clear();
+    halfedge_descriptor h = border[start];
+    // Walk the cycle; a non-manifold border could revisit a halfedge: stop there.
+    for(std::size_t steps = 0; steps <= border.size(); ++steps)
+    {
+      const std::size_t i = position(h);
+      if(i >= border.size() || border[i] != h || done[i])
+        break;
+      done[i] = true;
+      loop.push_back(point(h));
+      h = next(h, mesh);
+    }
+    if(loop.size() < 3)
+      continue;
+    Vec3 centre{0., 0., 0.};
+    for(const Vec3& p : loop)
+      for(int c = 0; c < 3; ++c)
+        centre[c] += p[c] / double(loop.size());
+    for(std::size_t i = 0; i < loop.size(); ++i)
+      triangles.push_back(Triangle3{centre, loop[i], loop[(i + 1) % loop.size()]});
+    ++holes;
+  }
+  return holes;
+}
+
+// The frame and box of the grid: `resolution` voxels along the longest principal extent of
+// the mesh, the mesh centred in the box, and `margin` empty voxels all around.
+inline Voxel_frame grid_frame(const std::vector<Triangle3>& triangles, int resolution, int margin,
+                              Voxel_box& box, const char* caller)
+{
+  const Principal_frame pf = principal_frame(triangles, caller);
+  Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for(const Triangle3& t : triangles)
+    for(const Vec3& p : t)
+    {
+      const Vec3 d = sub(p, pf.centroid);
+      for(int a = 0; a < 3; ++a)
+      {
+        const double c = dot3(d, pf.axes[a]);
+        lo[a] = (std::min)(lo[a], c);
+        hi[a] = (std::max)(hi[a], c);
+      }
+    }
+  const double longest = (std::max)({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  const double h = longest / resolution;
+  Vec3 origin = pf.centroid;
+  for(int a = 0; a < 3; ++a)
+  {
+    const double extent = hi[a] - lo[a];
+    const int n = (std::max)(1, int(std::ceil(extent / h - 1e-9)));
+    const double local_origin = lo[a] - 0.5 * (n * h - extent) - margin * h;
+    for(int c = 0; c < 3; ++c)
+      origin[c] += local_origin * pf.axes[a][c];
+    (a == 0 ? box.max.x : a == 1 ? box.max.y : box.max.z) = n + 2 * margin;
+  }
+  box.min = Voxel_key{0, 0, 0};
+  return Voxel_frame(origin, pf.axes, h);
+}
+
+// Marks every voxel that a triangle meets (conservative rasterisation) as SURFACE.
+inline void rasterize(const std::vector<Triangle3>& triangles, const Voxel_frame& frame,
+                      const Grid_layout& layout, std::vector<std::uint8_t>& labels)
+{
+  // Half a voxel, slightly enlarged so that rounding never opens a gap between triangles.
+  const double half = 0.5 + 1e-6;
+  const int hi[3] = {layout.box.max.x - 1, layout.box.max.y - 1, layout.box.max.z - 1};
+  for(const Triangle3& t : triangles)
+  {
+    const Vec3 g[3] = {frame.to_grid(t[0]), frame.to_grid(t[1]), frame.to_grid(t[2])};
+    int from[3], to[3];
+    for(int a = 0; a < 3; ++a)
+    {
+      const double lo_c = (std::min)({g[0][a], g[1][a], g[2][a]});
+      const double hi_c = (std::max)({g[0][a], g[1][a], g[2][a]});
+      from[a] = (std::max)(0, int(std::floor(lo_c - 1e-6)));
+      to[a] = (std::min)(hi[a], int(std::floor(hi_c + 1e-6)));
+    }
+    const bool single = from[0] == to[0] && from[1] == to[1] && from[2] == to[2];
+    for(int z = from[2]; z <= to[2]; ++z)
+      for(int y = from[1]; y <= to[1]; ++y)
+        for(int x = from[0]; x <= to[0]; ++x)
+        {
+          const std::size_t i = layout.index(Voxel_key{x, y, z});
+          if(labels[i] == SURFACE)
+            continue;
+          if(single || triangle_meets_cube(g[0], g[1], g[2], Vec3{x + 0.5, y + 0.5, z + 0.5}, half))
+            labels[i] = SURFACE;
+        }
+  }
+}
+
+// Labels OUTSIDE every EMPTY voxel 6-connected to the border of the box through EMPTY
+// voxels (a 6-path cannot cross a conservatively rasterised surface).
+inline void flood_outside(const Grid_layout& layout, std::vector<std::uint8_t>& labels)
+{
+  std::vector<std::uint32_t> stack;
+  const std::ptrdiff_t steps[6] = {1, -1, layout.stride_y, -layout.stride_y, layout.stride_z,
+                                   -layout.stride_z};
+  for(std::size_t i = 0; i < labels.size(); ++i)
+    if(labels[i] == EMPTY && layout.on_border(i))
+    {
+      labels[i] = OUTSIDE;
+      stack.push_back(std::uint32_t(i));
+    }
+  while(!stack.empty())
+  {
+    const std::size_t i = stack.back();
+    stack.pop_back();
+    if(layout.on_border(i))
+    {
+      // Border voxels: check each neighbour against the box.
+      const Voxel_key k = layout.key(i);
+      for(const Voxel_key& o : neighbourhood_26())
+        if(offset_order(o) == 1 && layout.box.contains(k + o))
+        {
+          const std::size_t j = layout.index(k + o);
+          if(labels[j] == EMPTY)
+          {
+            labels[j] = OUTSIDE;
+            stack.push_back(std::uint32_t(j));
+          }
+        }
+      continue;
+    }
+    for(std::ptrdiff_t s : steps)
+    {
+      const std::size_t j = std::size_t(std::ptrdiff_t(i) + s);
+      if(labels[j] == EMPTY)
+      {
+        labels[j] = OUTSIDE;
+        stack.push_back(std::uint32_t(j));
+      }
+    }
+  }
+}
+
+} // namespace internal
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// Fills `voxels` with the solid interior of `mesh`: the voxels of a grid aligned with the
+/// principal axes of the mesh that are not reachable from outside the mesh.
+///
+/// <b>Method.</b> The principal axes are those of the mesh's surface (area-weighted, so
+/// they do not depend on the tessellation), ordered by decreasing variance, each of the
+/// first two pointing to the side of positive third moment, the third their cross product;
+/// the grid has `resolution` voxels along the longest extent of the mesh in that frame, the
+/// mesh centred in it. Hence a rotated or translated mesh gives the same voxel keys, and
+/// `voxels.frame()` maps them to the moved mesh (up to rounding; a mesh whose principal
+/// variances are equal or whose third moments vanish, such as a sphere or a cube, has no
+/// preferred axes, and the grid's orientation is then arbitrary). Every voxel that a face
+/// touches is marked (conservative rasterisation, a separating-axis triangle-cube test),
+/// the outside is flood-filled from the border of the grid through the unmarked voxels
+/// with 6-connectivity (which no closed surface lets through), and the solid is every voxel
+/// the flood does not reach: the voxels enclosed by the surface <i>and the surface voxels
+/// themselves</i>. So the solid contains the whole mesh (a limb thinner than a voxel stays
+/// connected), and internal and overlapping parts (eyes, clothes, self-intersections)
+/// merge into one solid.
+///
+/// <b>Open meshes.</b> Each hole of the mesh (a cycle of border halfedges) is closed, for
+/// the rasterisation only, by a fan of triangles from the centroid of its vertices, so a
+/// hole of any size whose border is a cycle of the mesh does not let the flood in. A gap
+/// that is no border cycle (between two separate components, or in a polygon soup) is
+/// closed by the voxels of its rims when it is narrower than about a voxel. A single open
+/// sheet closes into a flat double sheet, which encloses nothing: an error.
+///
+/// \tparam FaceGraph a model of `FaceListGraph` (`Surface_mesh`, `Polyhedron_3`, ...); its
+///         faces may be polygons (they are split into fans of triangles), it may be open,
+///         non-manifold, self-intersecting, or have several components.
+/// \tparam VoxelSet a model of `VoxelSet` (`Dense_voxel_grid`, `Sparse_voxel_set`).
+/// \param mesh the mesh.
+/// \param voxels receives the solid (reset first); its frame is the grid's frame and its
+///        box the tight box of the solid.
+/// \param np optional named parameters among:
+///   - `vertex_point_map`: the positions of the vertices (default:
+///     `get(CGAL::vertex_point, mesh)`).
+///   - `resolution` (package parameter, `int`): voxels along the longest principal extent
+///     of the mesh, in [4, 8192] (default: `default_voxel_resolution`, 64).
+///   - `fill_holes` (package parameter, `bool`): close the border cycles of the mesh by fans
+///     before rasterising, as above (default: `true`).
+///   - `memory_limit` (package parameter, `double`, bytes): the most memory the function
+///     may allocate (default: `default_voxel_memory_limit`, 2 GiB). The need is estimated
+///     before allocating: 6 bytes per voxel of the grid's box.
+///
+/// \returns the number of voxels of the solid.
+/// \pre the mesh has at least one face, every coordinate is finite, it encloses some
+///      volume at this resolution.
+/// \throws std::invalid_argument for an empty mesh (no face), a non-finite coordinate, a
+///      mesh of zero area, a resolution out of range, or a mesh that encloses no voxel at
+///      all (an open sheet, or a shape thinner than a voxel: raise the resolution or close
+///      the mesh).
+/// \throws std::length_error when the grid would need more memory than `memory_limit`
+///      (the message names the bytes needed).
+///
+/// \b Complexity: O(F + A + V) time for F faces of total area A (in squared voxels) and V
+///    voxels in the grid's box; O(V) extra memory.
+template <typename FaceGraph, typename VoxelSet,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+std::size_t voxelize(const FaceGraph& mesh, VoxelSet& voxels,
+                     const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const char* caller = "voxelize";
+
+  const int resolution =
+      choose_parameter(get_parameter(np, internal_np::resolution_tag), default_voxel_resolution);
+  const double memory_limit = choose_parameter(get_parameter(np, internal_np::memory_limit_tag),
+                                               default_voxel_memory_limit);
+  const bool fill_holes =
+      choose_parameter(get_parameter(np, internal_np::fill_holes_tag), true);
+  if(resolution < 4 || resolution > 8192)
+  {
+    std::ostringstream msg;
+    msg << caller << ": the resolution " << resolution << " is out of range [4, 8192]";
+    throw std::invalid_argument(msg.str());
+  }
+
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, mesh));
+  std::vector<internal::Triangle3> triangles = internal::mesh_triangles(mesh, vpm, caller);
+
+  Voxel_box box;
+  const Voxel_frame frame = internal::grid_frame(triangles, resolution, 1, box, caller);
+  if(fill_holes)
+    internal::close_holes(mesh, vpm, triangles);
+  const internal::Grid_layout layout(box);
+  {
+    std::ostringstream what;
+    what << "a grid of " << layout.nx << " x " << layout.ny << " x " << layout.nz
+         << " voxels (resolution " << resolution << ")";
+    internal::require_memory(6. * double(layout.volume()), memory_limit, layout.volume(),
+                             caller, what.str());
+  }
+
+  std::vector<std::uint8_t> labels(layout.volume(), internal::EMPTY);
+  internal::rasterize(triangles, frame, layout, labels);
+  internal::flood_outside(layout, labels);
+
+  Voxel_box solid_box;
+  std::size_t enclosed = 0;
+  for(std::size_t i = 0; i < labels.size(); ++i)
+    if(labels[i] != internal::OUTSIDE)
+    {
+      solid_box.extend(layout.key(i));
+      enclosed += labels[i] == internal::EMPTY;
+    }
+  if(enclosed == 0)
+  {
+    std::ostringstream msg;
+    msg << caller << ": the mesh encloses no volume at resolution " << resolution
+        << " (an open sheet, a surface with holes wider than a voxel, or a shape thinner "
+           "than a voxel); close the mesh or raise the resolution";
+    throw std::invalid_argument(msg.str());
+  }
+
+  voxels.reset(frame, solid_box);
+  std::size_t count = 0;
+  for(std::size_t i = 0; i < labels.size(); ++i)
+    if(labels[i] != internal::OUTSIDE)
+    {
+      voxels.insert(layout.key(i));
+      ++count;
+    }
+  return count;
+}
+
+} // namespace Geodesic_skeleton
+} // namespace CGAL
+
+#endif // CGAL_GEODESIC_SKELETON_VOXELIZE_H

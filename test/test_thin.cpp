@@ -1,0 +1,254 @@
+// Specification of CGAL/Geodesic_skeleton/thin.h (and of its simple-point test).
+#include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
+#include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
+#include <CGAL/Geodesic_skeleton/distance_transform.h>
+#include <CGAL/Geodesic_skeleton/internal/simple_point.h>
+#include <CGAL/Geodesic_skeleton/thin.h>
+
+#include <Geodesic_skeleton_test/voxel_skeleton.h>
+
+#include <boost/mpl/list.hpp>
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <functional>
+#include <random>
+#include <set>
+#include <stdexcept>
+
+namespace gs = CGAL::Geodesic_skeleton;
+namespace test = Geodesic_skeleton_test;
+
+namespace {
+
+using Voxel_set_models = boost::mpl::list<gs::Dense_voxel_grid, gs::Sparse_voxel_set>;
+
+template <typename VoxelSet>
+VoxelSet voxels_where(const gs::Voxel_box& box, const std::function<bool(int, int, int)>& inside)
+{
+  VoxelSet s;
+  s.reset(gs::Voxel_frame(), box);
+  for(int z = box.min.z; z < box.max.z; ++z)
+    for(int y = box.min.y; y < box.max.y; ++y)
+      for(int x = box.min.x; x < box.max.x; ++x)
+        if(inside(x, y, z))
+          s.insert(gs::Voxel_key{x, y, z});
+  return s;
+}
+
+// Topology of a set, independently of the package: 26-components, cavities (6-components
+// of the background minus the outer one) and Euler characteristic.
+struct Topology
+{
+  int components, cavities;
+  long euler;
+  bool operator==(const Topology& o) const
+  {
+    return components == o.components && cavities == o.cavities && euler == o.euler;
+  }
+};
+
+template <typename VoxelSet>
+int background_components_6(const VoxelSet& s, const gs::Voxel_box& box)
+{
+  std::set<gs::Voxel_key> seen;
+  int count = 0;
+  for(int z = box.min.z; z < box.max.z; ++z)
+    for(int y = box.min.y; y < box.max.y; ++y)
+      for(int x = box.min.x; x < box.max.x; ++x)
+      {
+        const gs::Voxel_key start{x, y, z};
+        if(s.contains(start) || seen.count(start))
+          continue;
+        ++count;
+        std::vector<gs::Voxel_key> stack{start};
+        seen.insert(start);
+        while(!stack.empty())
+        {
+          const gs::Voxel_key k = stack.back();
+          stack.pop_back();
+          for(const gs::Voxel_key& o : gs::neighbourhood_26())
+          {
+            const gs::Voxel_key n = k + o;
+            if(gs::offset_order(o) == 1 && box.contains(n) && !s.contains(n) && seen.insert(n).second)
+              stack.push_back(n);
+          }
+        }
+      }
+  return count;
+}
+
+template <typename VoxelSet>
+Topology topology(const VoxelSet& s, const gs::Voxel_box& box_with_margin)
+{
+  return Topology{test::components_26(s), background_components_6(s, box_with_margin) - 1,
+                  test::euler_characteristic(s)};
+}
+
+// Simple by definition: deleting the centre of a 5x5x5 block holding the configuration
+// changes neither the components, nor the cavities, nor the Euler characteristic.
+bool simple_by_definition(std::uint32_t config)
+{
+  const gs::Voxel_box block{gs::Voxel_key{-2, -2, -2}, gs::Voxel_key{3, 3, 3}};
+  gs::Sparse_voxel_set with;
+  with.insert(gs::Voxel_key{0, 0, 0});
+  for(int b = 0; b < 26; ++b)
+    if(config & (1u << b))
+      with.insert(gs::neighbourhood_26()[b]);
+  gs::Sparse_voxel_set without = with;
+  without.erase(gs::Voxel_key{0, 0, 0});
+  if(without.size() == 0)
+    return false;
+  return topology(with, block) == topology(without, block);
+}
+
+template <typename VoxelSet>
+std::uint32_t configuration(const VoxelSet& s, const gs::Voxel_key& k)
+{
+  std::uint32_t config = 0;
+  for(int b = 0; b < 26; ++b)
+    if(s.contains(k + gs::neighbourhood_26()[b]))
+      config |= 1u << b;
+  return config;
+}
+
+template <typename VoxelSet>
+void thin_set(VoxelSet& s)
+{
+  const auto field = gs::distance_transform(s);
+  gs::thin(s, field);
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(thin)
+
+BOOST_AUTO_TEST_CASE(the_simple_point_test_agrees_with_the_definition)
+{
+  const auto& test = gs::internal::Simple_point_test::instance();
+  std::mt19937 random(5);
+  int simple = 0, checked = 0;
+  for(int trial = 0; trial < 3000; ++trial)
+  {
+    // Densities from sparse to full, so that both answers are frequent.
+    const unsigned density = 1 + trial % 7;
+    std::uint32_t config = 0;
+    for(int b = 0; b < 26; ++b)
+      if(random() % 8 < density)
+        config |= 1u << b;
+    const bool expected = simple_by_definition(config);
+    BOOST_TEST(test.is_simple(config) == expected, "configuration " << config);
+    simple += expected;
+    ++checked;
+  }
+  BOOST_TEST(simple > checked / 10);
+  BOOST_TEST(simple < checked * 9 / 10);
+  BOOST_TEST(!test.is_simple(0));                 // isolated
+  BOOST_TEST(!test.is_simple((1u << 26) - 1));    // interior
+  BOOST_TEST(test.is_simple(1u << 4));            // curve end
+  BOOST_TEST(!test.is_simple((1u << 4) | (1u << 21))); // middle of a curve
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(a_ball_thins_to_one_voxel, VoxelSet, Voxel_set_models)
+{
+  const gs::Voxel_box box{gs::Voxel_key{-9, -9, -9}, gs::Voxel_key{10, 10, 10}};
+  VoxelSet s = voxels_where<VoxelSet>(box, [](int x, int y, int z) { return x * x + y * y + z * z <= 64; });
+  thin_set(s);
+  BOOST_TEST(s.size() == 1u);
+  s.for_each([](const gs::Voxel_key& k) { BOOST_TEST(std::abs(k.x) + std::abs(k.y) + std::abs(k.z) <= 1); });
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(topology_is_kept, VoxelSet, Voxel_set_models)
+{
+  const gs::Voxel_box box{gs::Voxel_key{-16, -16, -8}, gs::Voxel_key{17, 17, 9}};
+  auto solid_torus = [](int x, int y, int z) {
+    const double d = std::hypot(double(x), double(y)) - 10.;
+    return d * d + z * z <= 16.;
+  };
+  auto two_balls = [](int x, int y, int z) {
+    return (x - 8) * (x - 8) + y * y + z * z <= 25 || (x + 8) * (x + 8) + y * y + z * z <= 25;
+  };
+  auto shell = [](int x, int y, int z) { // a ball with a cavity
+    const int r2 = x * x + y * y + z * z;
+    return r2 <= 49 && r2 > 16;
+  };
+  auto two_tunnels = [](int x, int y, int z) { // a slab pierced twice
+    return std::abs(z) <= 3 && std::abs(x) <= 14 && std::abs(y) <= 6 &&
+           !((x - 7) * (x - 7) + y * y <= 9) && !((x + 7) * (x + 7) + y * y <= 9);
+  };
+  for(const auto& shape : {std::function<bool(int, int, int)>(solid_torus), std::function<bool(int, int, int)>(two_balls),
+                           std::function<bool(int, int, int)>(shell), std::function<bool(int, int, int)>(two_tunnels)})
+  {
+    VoxelSet s = voxels_where<VoxelSet>(box, shape);
+    const Topology before = topology(s, box.grown(1));
+    thin_set(s);
+    const Topology after = topology(s, box.grown(1));
+    BOOST_TEST(before.components == after.components);
+    BOOST_TEST(before.cavities == after.cavities);
+    BOOST_TEST(before.euler == after.euler);
+  }
+  VoxelSet torus = voxels_where<VoxelSet>(box, solid_torus);
+  thin_set(torus);
+  BOOST_TEST(test::euler_characteristic(torus) == 0); // one cycle, one component
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(the_result_is_thin, VoxelSet, Voxel_set_models)
+{
+  const gs::Voxel_box box{gs::Voxel_key{-20, -12, -12}, gs::Voxel_key{21, 13, 13}};
+  // A "T" of two bars of different thickness.
+  VoxelSet s = voxels_where<VoxelSet>(box, [](int x, int y, int z) {
+    return (std::abs(x) <= 18 && y * y + z * z <= 16) || (x >= 0 && x <= 6 && std::abs(y) <= 11 && std::abs(z) <= 2);
+  });
+  thin_set(s);
+  const auto& test = gs::internal::Simple_point_test::instance();
+  int removable = 0;
+  s.for_each([&](const gs::Voxel_key& k) {
+    const std::uint32_t c = configuration(s, k);
+    removable += test.is_simple(c) && __builtin_popcount(c) != 1;
+  });
+  BOOST_TEST(removable == 0);
+  BOOST_TEST(s.size() > 20u);
+  BOOST_TEST(s.size() < 80u);
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(a_bar_thins_to_its_axis, VoxelSet, Voxel_set_models)
+{
+  // A cylinder of radius 6 voxels along x, from x = 0 to 59 (centres on the axis y = z = 0).
+  const gs::Voxel_box box{gs::Voxel_key{0, -7, -7}, gs::Voxel_key{60, 8, 8}};
+  VoxelSet s = voxels_where<VoxelSet>(box, [](int, int y, int z) { return y * y + z * z <= 36; });
+  thin_set(s);
+  int min_x = 1000, max_x = -1000;
+  s.for_each([&](const gs::Voxel_key& k) {
+    BOOST_TEST(std::hypot(double(k.y), double(k.z)) <= 1.0);
+    min_x = std::min(min_x, k.x);
+    max_x = std::max(max_x, k.x);
+  });
+  BOOST_TEST(min_x <= 7); // ends within about a radius of the caps
+  BOOST_TEST(max_x >= 52);
+  BOOST_TEST(test::components_26(s) == 1);
+}
+
+BOOST_AUTO_TEST_CASE(both_models_give_the_same_skeleton)
+{
+  const gs::Voxel_box box{gs::Voxel_key{-16, -16, -8}, gs::Voxel_key{17, 17, 9}};
+  auto shape = [](int x, int y, int z) {
+    return (std::hypot(double(x), double(y)) - 10.) * (std::hypot(double(x), double(y)) - 10.) + z * z <= 16. ||
+           (x * x + y * y <= 9 && std::abs(z) <= 6) || (std::abs(x) <= 12 && y * y + z * z <= 4);
+  };
+  auto dense = voxels_where<gs::Dense_voxel_grid>(box, shape);
+  auto sparse = voxels_where<gs::Sparse_voxel_set>(box, shape);
+  thin_set(dense);
+  thin_set(sparse);
+  std::set<gs::Voxel_key> a, b;
+  dense.for_each([&](const gs::Voxel_key& k) { a.insert(k); });
+  sparse.for_each([&](const gs::Voxel_key& k) { b.insert(k); });
+  BOOST_TEST((a == b));
+}
+
+BOOST_AUTO_TEST_CASE(an_empty_set_is_an_error)
+{
+  gs::Sparse_voxel_set empty;
+  BOOST_CHECK_THROW(gs::thin(empty, gs::Voxel_distance_field()), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -1,0 +1,245 @@
+// Specification of CGAL/Geodesic_skeleton/voxelize.h.
+#include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
+#include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
+#include <CGAL/Geodesic_skeleton/voxelize.h>
+
+#include <Geodesic_skeleton_test/shapes.h>
+#include <Geodesic_skeleton_test/voxel_skeleton.h>
+
+#include <CGAL/Aff_transformation_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <boost/mpl/list.hpp>
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+namespace gs = CGAL::Geodesic_skeleton;
+namespace test = Geodesic_skeleton_test;
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+using Polyhedron = CGAL::Polyhedron_3<Kernel>;
+using Voxel_set_models = boost::mpl::list<gs::Dense_voxel_grid, gs::Sparse_voxel_set>;
+
+Mesh mesh_of(const test::Soup& soup)
+{
+  Mesh m;
+  test::soup_to_mesh(soup, m);
+  return m;
+}
+
+template <typename VoxelSet>
+std::set<gs::Voxel_key> keys_of(const VoxelSet& s)
+{
+  std::set<gs::Voxel_key> keys;
+  s.for_each([&](const gs::Voxel_key& k) { keys.insert(k); });
+  return keys;
+}
+
+// Whether `what()` of the exception thrown by f contains `text`.
+template <typename Exception, typename F>
+bool throws_with(F f, const std::string& text)
+{
+  try
+  {
+    f();
+  }
+  catch(const Exception& e)
+  {
+    return std::string(e.what()).find(text) != std::string::npos;
+  }
+  return false;
+}
+
+// A random rotation (uniform quaternion) and translation.
+CGAL::Aff_transformation_3<Kernel> random_rigid_motion(unsigned seed)
+{
+  std::mt19937 random(seed);
+  std::normal_distribution<double> normal;
+  double q[4];
+  double n = 0;
+  for(double& c : q)
+  {
+    c = normal(random);
+    n += c * c;
+  }
+  for(double& c : q)
+    c /= std::sqrt(n);
+  const double w = q[0], x = q[1], y = q[2], z = q[3];
+  return CGAL::Aff_transformation_3<Kernel>(
+      1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w), 3.7,
+      2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w), -1.2,
+      2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y), 0.4);
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(voxelize)
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(a_box_fills_its_voxels, VoxelSet, Voxel_set_models)
+{
+  // A 4 x 2 x 1 box at resolution 32: voxels of 1/8, 32 x 16 x 8 voxels inside, plus at
+  // most one layer of surface voxels around.
+  VoxelSet s;
+  const std::size_t n = gs::voxelize(mesh_of(test::box(0, 0, 0, 4, 2, 1)), s, gs::parameters::resolution(32));
+  BOOST_TEST(n == s.size());
+  BOOST_TEST(s.frame().voxel_size() == 0.125, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(n >= 32u * 16u * 8u);
+  BOOST_TEST(n <= 34u * 18u * 10u);
+  BOOST_TEST(test::components_26(s) == 1);
+  BOOST_TEST(1 - test::euler_characteristic(s) == 0); // no tunnel
+}
+
+BOOST_AUTO_TEST_CASE(both_models_and_both_mesh_types_give_the_same_voxels)
+{
+  Mesh mesh;
+  test::read_demo_mesh("cow.off", mesh);
+  Polyhedron polyhedron;
+  test::read_demo_mesh("cow.off", polyhedron);
+  gs::Dense_voxel_grid dense;
+  gs::Sparse_voxel_set sparse, from_polyhedron;
+  gs::voxelize(mesh, dense);
+  gs::voxelize(mesh, sparse);
+  gs::voxelize(polyhedron, from_polyhedron);
+  BOOST_TEST((keys_of(dense) == keys_of(sparse)));
+  BOOST_TEST((keys_of(sparse) == keys_of(from_polyhedron)));
+}
+
+BOOST_AUTO_TEST_CASE(the_volume_of_a_sphere_is_close_to_the_exact_one)
+{
+  // The solid includes the surface voxels: between the ball and the ball grown by one voxel.
+  gs::Sparse_voxel_set s;
+  gs::voxelize(mesh_of(test::icosphere(1., 4)), s, gs::parameters::resolution(40));
+  const double h = s.frame().voxel_size();
+  const double volume = double(s.size()) * h * h * h;
+  BOOST_TEST(volume > 4. / 3. * test::pi * 0.97);
+  BOOST_TEST(volume < 4. / 3. * test::pi * std::pow(1. + 1.8 * h, 3));
+}
+
+BOOST_AUTO_TEST_CASE(a_rigid_motion_gives_the_same_voxels_moved_with_the_mesh)
+{
+  Mesh cow;
+  test::read_demo_mesh("cow.off", cow);
+  gs::Dense_voxel_grid original;
+  gs::voxelize(cow, original);
+  for(unsigned seed : {1u, 2u, 3u})
+  {
+    const auto motion = random_rigid_motion(seed);
+    Mesh moved = cow;
+    for(auto v : vertices(moved))
+      moved.point(v) = motion.transform(moved.point(v));
+    gs::Dense_voxel_grid s;
+    gs::voxelize(moved, s);
+    const auto a = keys_of(original), b = keys_of(s);
+    std::size_t differences = 0;
+    for(const auto& k : a)
+      differences += b.count(k) == 0;
+    for(const auto& k : b)
+      differences += a.count(k) == 0;
+    BOOST_TEST_MESSAGE("seed " << seed << ": " << differences << " voxels differ of " << a.size());
+    BOOST_TEST(differences <= a.size() / 1000); // rounding at exact voxel boundaries only
+    // The frame moves with the mesh: a voxel centre maps to the moved point.
+    const gs::Voxel_key k = *a.begin();
+    const auto p = original.frame().centre(k), q = s.frame().centre(k);
+    const Point moved_p = motion.transform(Point(p[0], p[1], p[2]));
+    BOOST_TEST(std::sqrt(test::squared_distance_3(moved_p, Point(q[0], q[1], q[2]))) < 1e-9);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(overlapping_and_self_intersecting_parts_make_one_solid)
+{
+  test::Soup soup = test::box(0, 0, 0, 4, 1, 1);
+  test::append(soup, test::box(1, -1, -1, 2, 2, 2)); // crossing the first box
+  test::append(soup, test::box(1.5, 0.25, 0.25, 1.6, 0.75, 0.75)); // inside both
+  gs::Sparse_voxel_set s;
+  gs::voxelize(mesh_of(soup), s, gs::parameters::resolution(32));
+  BOOST_TEST(test::components_26(s) == 1);
+  BOOST_TEST(1 - test::euler_characteristic(s) == 0);
+  const double h = s.frame().voxel_size();
+  const double union_volume = 4. + 9. - 1.;
+  BOOST_TEST(double(s.size()) * h * h * h > union_volume);
+}
+
+BOOST_AUTO_TEST_CASE(holes_are_closed)
+{
+  // An open tube (no caps): its two border cycles are closed by fans.
+  gs::Sparse_voxel_set tube;
+  gs::voxelize(mesh_of(test::cylinder(1., 6., 32, 40, false)), tube, gs::parameters::resolution(48));
+  const double h = tube.frame().voxel_size();
+  BOOST_TEST(double(tube.size()) * h * h * h > test::pi * 6. * 0.95);
+
+  // The demo elephant with 106 holes is nearly the closed elephant.
+  Mesh elephant, holed;
+  test::read_demo_mesh("elephant.off", elephant);
+  test::read_demo_mesh("elephant-with-holes.off", holed);
+  gs::Sparse_voxel_set a, b;
+  gs::voxelize(elephant, a);
+  gs::voxelize(holed, b);
+  BOOST_TEST(double(b.size()) > 0.9 * double(a.size()));
+  BOOST_TEST(double(b.size()) < 1.1 * double(a.size()));
+
+  // Without hole filling, the flood enters the tube: nothing is enclosed.
+  gs::Sparse_voxel_set open;
+  BOOST_CHECK_THROW(gs::voxelize(mesh_of(test::cylinder(1., 6., 32, 40, false)), open,
+                                 gs::parameters::fill_holes(false)),
+                    std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(a_gap_of_a_fraction_of_a_voxel_between_components_is_closed)
+{
+  // Two half-boxes 0.3 voxel apart, with no border cycle to fill: a polygon soup of two
+  // open boxes (each missing the face towards the other).
+  test::Soup soup = test::box(0, 0, 0, 2, 1, 1);
+  soup.faces.erase(soup.faces.begin() + 10, soup.faces.begin() + 12); // drop the x1 face
+  test::Soup right = test::box(2, 0, 0, 4, 1, 1);
+  right.faces.erase(right.faces.begin() + 8, right.faces.begin() + 10); // drop the x0 face
+  test::append(soup, right, 0.3 * 4. / 32., 0, 0);
+  gs::Sparse_voxel_set s;
+  gs::voxelize(mesh_of(soup), s, gs::parameters::combine(gs::parameters::resolution(32),
+                                                        gs::parameters::fill_holes(false)));
+  const double h = s.frame().voxel_size();
+  BOOST_TEST(double(s.size()) * h * h * h > 4. * 0.95);
+}
+
+BOOST_AUTO_TEST_CASE(bad_input_is_a_clear_error)
+{
+  gs::Sparse_voxel_set s;
+  Mesh empty;
+  BOOST_TEST(throws_with<std::invalid_argument>([&] { gs::voxelize(empty, s); }, "no faces"));
+
+  Mesh nan_mesh = mesh_of(test::box(0, 0, 0, 1, 1, 1));
+  nan_mesh.point(*vertices(nan_mesh).begin()) = Point(std::numeric_limits<double>::quiet_NaN(), 0, 0);
+  BOOST_TEST(throws_with<std::invalid_argument>([&] { gs::voxelize(nan_mesh, s); }, "non-finite"));
+  Mesh inf_mesh = mesh_of(test::box(0, 0, 0, 1, 1, 1));
+  inf_mesh.point(*vertices(inf_mesh).begin()) = Point(0, std::numeric_limits<double>::infinity(), 0);
+  BOOST_TEST(throws_with<std::invalid_argument>([&] { gs::voxelize(inf_mesh, s); }, "non-finite"));
+
+  test::Soup sheet; // a flat open square
+  sheet.add_point(0, 0, 0);
+  sheet.add_point(1, 0, 0);
+  sheet.add_point(1, 1, 0);
+  sheet.add_point(0, 1, 0);
+  sheet.add_quad(0, 1, 2, 3);
+  BOOST_TEST(throws_with<std::invalid_argument>([&] { gs::voxelize(mesh_of(sheet), s); }, "encloses no volume"));
+
+  const Mesh cube = mesh_of(test::box(0, 0, 0, 1, 1, 1));
+  BOOST_TEST(throws_with<std::invalid_argument>([&] { gs::voxelize(cube, s, gs::parameters::resolution(3)); }, "out of range"));
+  BOOST_TEST(throws_with<std::invalid_argument>([&] { gs::voxelize(cube, s, gs::parameters::resolution(100000)); }, "out of range"));
+  BOOST_TEST(throws_with<std::length_error>(
+      [&] { gs::voxelize(cube, s, gs::parameters::combine(gs::parameters::resolution(1000), gs::parameters::memory_limit(1e9))); },
+      "needs about"));
+  BOOST_TEST(s.size() == 0u); // nothing was filled by the failed calls
+}
+
+BOOST_AUTO_TEST_SUITE_END()
