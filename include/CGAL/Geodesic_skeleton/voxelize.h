@@ -186,38 +186,46 @@ inline void rasterize(const std::vector<Triangle3>& triangles, const Voxel_frame
 }
 
 // Labels OUTSIDE every EMPTY voxel 6-connected to the border of the box through EMPTY
-// voxels (a 6-path cannot cross a conservatively rasterised surface).
+// voxels (a 6-path cannot cross a conservatively rasterised surface). The empty border
+// voxels are labelled first; the stack then holds only voxels off the border, whose six
+// neighbours are in the box, so the inner loop needs no bounds check.
 inline void flood_outside(const Grid_layout& layout, std::vector<std::uint8_t>& labels)
 {
   std::vector<std::uint32_t> stack;
   const std::ptrdiff_t steps[6] = {1, -1, layout.stride_y, -layout.stride_y, layout.stride_z,
                                    -layout.stride_z};
-  for(std::size_t i = 0; i < labels.size(); ++i)
-    if(labels[i] == EMPTY && layout.on_border(i))
+  std::vector<std::uint32_t> border;
+  for(std::size_t z = 0; z < layout.nz; ++z)
+    for(std::size_t y = 0; y < layout.ny; ++y)
     {
-      labels[i] = OUTSIDE;
-      stack.push_back(std::uint32_t(i));
+      const bool whole_row = z == 0 || y == 0 || z + 1 == layout.nz || y + 1 == layout.ny;
+      const std::size_t row = (z * layout.ny + y) * layout.nx;
+      for(std::size_t x = 0; x < layout.nx; x += (whole_row || x + 1 == layout.nx) ? 1 : layout.nx - 1)
+        if(labels[row + x] == EMPTY)
+        {
+          labels[row + x] = OUTSIDE;
+          border.push_back(std::uint32_t(row + x));
+        }
     }
+  for(std::uint32_t i : border)
+  {
+    const Voxel_key k = layout.key(i);
+    for(const Voxel_key& o : neighbourhood_26())
+    {
+      if(offset_order(o) != 1 || !layout.box.contains(k + o))
+        continue;
+      const std::size_t j = layout.index(k + o);
+      if(labels[j] == EMPTY) // necessarily off the border
+      {
+        labels[j] = OUTSIDE;
+        stack.push_back(std::uint32_t(j));
+      }
+    }
+  }
   while(!stack.empty())
   {
     const std::size_t i = stack.back();
     stack.pop_back();
-    if(layout.on_border(i))
-    {
-      // Border voxels: check each neighbour against the box.
-      const Voxel_key k = layout.key(i);
-      for(const Voxel_key& o : neighbourhood_26())
-        if(offset_order(o) == 1 && layout.box.contains(k + o))
-        {
-          const std::size_t j = layout.index(k + o);
-          if(labels[j] == EMPTY)
-          {
-            labels[j] = OUTSIDE;
-            stack.push_back(std::uint32_t(j));
-          }
-        }
-      continue;
-    }
     for(std::ptrdiff_t s : steps)
     {
       const std::size_t j = std::size_t(std::ptrdiff_t(i) + s);
