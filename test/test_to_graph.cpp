@@ -37,19 +37,9 @@ using Polyhedron = CGAL::Polyhedron_3<Kernel>;
 using Voxel_set_models = boost::mpl::list<gs::Dense_voxel_grid, gs::Sparse_voxel_set>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
 
-Mesh mesh_of(const test::Soup& soup)
-{
-  Mesh m;
-  test::soup_to_mesh(soup, m);
-  return m;
-}
+Mesh mesh_of(const test::Soup& soup) { return test::mesh_of<Mesh>(soup); }
 
-Mesh demo_mesh(const char* name)
-{
-  Mesh m;
-  test::read_demo_mesh(name, m);
-  return m;
-}
+Mesh demo_mesh(const char* name) { return test::demo_mesh<Mesh>(name); }
 
 template <typename Graph>
 int count_degree(const Graph& g, std::size_t d)
@@ -90,24 +80,6 @@ bool maps_every_vertex_once(const Graph& g, const FaceGraph& mesh)
   return true;
 }
 
-CGAL::Aff_transformation_3<Kernel> random_rigid_motion(unsigned seed)
-{
-  std::mt19937 random(seed);
-  std::normal_distribution<double> normal;
-  double q[4], n = 0;
-  for(double& c : q)
-  {
-    c = normal(random);
-    n += c * c;
-  }
-  for(double& c : q)
-    c /= std::sqrt(n);
-  const double w = q[0], x = q[1], y = q[2], z = q[3];
-  return CGAL::Aff_transformation_3<Kernel>(
-      1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w), -2.5,
-      2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w), 10.,
-      2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y), 0.7);
-}
 
 } // namespace
 
@@ -185,7 +157,7 @@ BOOST_AUTO_TEST_CASE(a_rigid_motion_moves_the_skeleton_with_the_mesh)
   const auto before = test::skeleton_points(original.graph);
   for(unsigned seed : {3u, 4u})
   {
-    const auto motion = random_rigid_motion(seed);
+    const auto motion = test::random_rigid_motion<Kernel>(seed, -2.5, 10., 0.7);
     Mesh moved = cow;
     for(auto v : vertices(moved))
       moved.point(v) = motion.transform(moved.point(v));

@@ -32,20 +32,8 @@ using Mesh = CGAL::Surface_mesh<Point>;
 using Polyhedron = CGAL::Polyhedron_3<Kernel>;
 using Voxel_set_models = boost::mpl::list<gs::Dense_voxel_grid, gs::Sparse_voxel_set>;
 
-Mesh mesh_of(const test::Soup& soup)
-{
-  Mesh m;
-  test::soup_to_mesh(soup, m);
-  return m;
-}
+Mesh mesh_of(const test::Soup& soup) { return test::mesh_of<Mesh>(soup); }
 
-template <typename VoxelSet>
-std::set<gs::Voxel_key> keys_of(const VoxelSet& s)
-{
-  std::set<gs::Voxel_key> keys;
-  s.for_each([&](const gs::Voxel_key& k) { keys.insert(k); });
-  return keys;
-}
 
 // Whether `what()` of the exception thrown by f contains `text`.
 template <typename Exception, typename F>
@@ -62,26 +50,6 @@ bool throws_with(F f, const std::string& text)
   return false;
 }
 
-// A random rotation (uniform quaternion) and translation.
-CGAL::Aff_transformation_3<Kernel> random_rigid_motion(unsigned seed)
-{
-  std::mt19937 random(seed);
-  std::normal_distribution<double> normal;
-  double q[4];
-  double n = 0;
-  for(double& c : q)
-  {
-    c = normal(random);
-    n += c * c;
-  }
-  for(double& c : q)
-    c /= std::sqrt(n);
-  const double w = q[0], x = q[1], y = q[2], z = q[3];
-  return CGAL::Aff_transformation_3<Kernel>(
-      1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w), 3.7,
-      2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w), -1.2,
-      2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y), 0.4);
-}
 
 } // namespace
 
@@ -112,8 +80,8 @@ BOOST_AUTO_TEST_CASE(both_models_and_both_mesh_types_give_the_same_voxels)
   gs::voxelize(mesh, dense);
   gs::voxelize(mesh, sparse);
   gs::voxelize(polyhedron, from_polyhedron);
-  BOOST_TEST((keys_of(dense) == keys_of(sparse)));
-  BOOST_TEST((keys_of(sparse) == keys_of(from_polyhedron)));
+  BOOST_TEST((test::keys_of(dense) == test::keys_of(sparse)));
+  BOOST_TEST((test::keys_of(sparse) == test::keys_of(from_polyhedron)));
 }
 
 BOOST_AUTO_TEST_CASE(the_volume_of_a_sphere_is_close_to_the_exact_one)
@@ -135,13 +103,13 @@ BOOST_AUTO_TEST_CASE(a_rigid_motion_gives_the_same_voxels_moved_with_the_mesh)
   gs::voxelize(cow, original);
   for(unsigned seed : {1u, 2u, 3u})
   {
-    const auto motion = random_rigid_motion(seed);
+    const auto motion = test::random_rigid_motion<Kernel>(seed, 3.7, -1.2, 0.4);
     Mesh moved = cow;
     for(auto v : vertices(moved))
       moved.point(v) = motion.transform(moved.point(v));
     gs::Dense_voxel_grid s;
     gs::voxelize(moved, s);
-    const auto a = keys_of(original), b = keys_of(s);
+    const auto a = test::keys_of(original), b = test::keys_of(s);
     std::size_t differences = 0;
     for(const auto& k : a)
       differences += b.count(k) == 0;

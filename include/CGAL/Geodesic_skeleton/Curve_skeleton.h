@@ -27,7 +27,9 @@ namespace Geodesic_skeleton {
 template <typename Point, typename MeshVertex>
 struct Curve_skeleton_vertex
 {
+  /// The point type.
   using Point_type = Point;
+  /// The vertex descriptor of the mesh.
   using Mesh_vertex = MeshVertex;
 
   /// The position, in the mesh's own coordinates.

@@ -52,12 +52,16 @@ public:
     m_size = 0;
   }
 
+  /// The frame, which maps voxel keys to world points.
   const Voxel_frame& frame() const { return m_frame; }
   /// The box given to `reset()`, which contains every voxel of the set.
   const Voxel_box& bounding_box() const { return m_box; }
+  /// The number of voxels in the set.
   std::size_t size() const { return m_size; }
+  /// Whether the set has no voxel.
   bool empty() const { return m_size == 0; }
 
+  /// Whether `k` is in the set (any key may be asked).
   bool contains(const Voxel_key& k) const { return m_box.contains(k) && m_cells[index(k)] != 0; }
 
   /// Inserts `k`; returns whether it was absent.

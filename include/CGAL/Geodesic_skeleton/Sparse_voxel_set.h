@@ -45,13 +45,17 @@ public:
     m_box = Voxel_box{};
   }
 
+  /// The frame, which maps voxel keys to world points.
   const Voxel_frame& frame() const { return m_frame; }
   /// A box containing every voxel of the set: the bounding box of every voxel inserted
   /// since the last `reset()` or `clear()` (removals do not shrink it).
   const Voxel_box& bounding_box() const { return m_box; }
+  /// The number of voxels in the set.
   std::size_t size() const { return m_voxels.size(); }
+  /// Whether the set has no voxel.
   bool empty() const { return m_voxels.empty(); }
 
+  /// Whether `k` is in the set (any key may be asked).
   bool contains(const Voxel_key& k) const { return m_voxels.count(k) != 0; }
   /// Inserts `k`; returns whether it was absent.
   bool insert(const Voxel_key& k)

@@ -28,6 +28,7 @@ namespace Geodesic_skeleton {
 class Voxel_frame
 {
 public:
+  /// A point or vector of three `double`s (world or grid coordinates).
   using Vector = std::array<double, 3>;
 
   Voxel_frame() = default;
@@ -52,6 +53,7 @@ public:
       throw std::invalid_argument("Voxel_frame: the axes must be right-handed");
   }
 
+  /// The world point of grid coordinates (0, 0, 0), a corner of voxel (0, 0, 0).
   const Vector& origin() const { return m_origin; }
   /// Axis `i` (0, 1 or 2), a unit vector in world coordinates.
   const Vector& axis(int i) const { return m_axes[i]; }

@@ -25,12 +25,17 @@ namespace Geodesic_skeleton {
 /// grid coordinates; its centre is `(x + 1/2, y + 1/2, z + 1/2)`.
 struct Voxel_key
 {
-  int x = 0, y = 0, z = 0;
+  int x = 0; ///< first grid coordinate (along the frame's first axis)
+  int y = 0; ///< second grid coordinate
+  int z = 0; ///< third grid coordinate
+
+  /// Equality of the three coordinates.
 
   friend bool operator==(const Voxel_key& a, const Voxel_key& b)
   {
     return a.x == b.x && a.y == b.y && a.z == b.z;
   }
+  /// Inequality.
   friend bool operator!=(const Voxel_key& a, const Voxel_key& b) { return !(a == b); }
   /// Lexicographic order on `(z, y, x)`, the memory order of `Dense_voxel_grid`.
   friend bool operator<(const Voxel_key& a, const Voxel_key& b)
@@ -39,10 +44,12 @@ struct Voxel_key
     if(a.y != b.y) return a.y < b.y;
     return a.x < b.x;
   }
+  /// Coordinate-wise sum (a key plus a neighbour offset).
   friend Voxel_key operator+(const Voxel_key& a, const Voxel_key& b)
   {
     return Voxel_key{a.x + b.x, a.y + b.y, a.z + b.z};
   }
+  /// Writes `(x, y, z)`.
   friend std::ostream& operator<<(std::ostream& os, const Voxel_key& k)
   {
     return os << '(' << k.x << ", " << k.y << ", " << k.z << ')';
@@ -53,6 +60,7 @@ struct Voxel_key
 /// Hash of a `Voxel_key`, for unordered containers.
 struct Voxel_key_hash
 {
+  /// The hash value of `k`.
   std::size_t operator()(const Voxel_key& k) const
   {
     // Multiplicative mixing of the three coordinates (large odd constants).
@@ -68,7 +76,10 @@ struct Voxel_key_hash
 /// for `y` and `z`). A box with `max.c <= min.c` along any axis is empty.
 struct Voxel_box
 {
-  Voxel_key min, max;
+  Voxel_key min; ///< the smallest key of the box (inclusive)
+  Voxel_key max; ///< one past the largest key along each axis (exclusive)
+
+  /// Whether the box has no voxel.
 
   bool empty() const { return max.x <= min.x || max.y <= min.y || max.z <= min.z; }
   /// Voxels along each axis (0 when empty).
@@ -83,6 +94,7 @@ struct Voxel_box
     const auto e = extent();
     return e[0] * e[1] * e[2];
   }
+  /// Whether `k` is in the box.
   bool contains(const Voxel_key& k) const
   {
     return k.x >= min.x && k.x < max.x && k.y >= min.y && k.y < max.y && k.z >= min.z &&

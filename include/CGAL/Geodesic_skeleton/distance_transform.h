@@ -98,20 +98,11 @@ template <typename VoxelSet, typename NamedParameters = CGAL::parameters::Defaul
 Voxel_distance_field distance_transform(const VoxelSet& voxels,
                                         const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
   const char* caller = "distance_transform";
-  const double memory_limit = choose_parameter(get_parameter(np, internal_np::memory_limit_tag),
-                                               default_voxel_memory_limit);
   const Voxel_box box = internal::require_nonempty_box(voxels, 1, caller);
   const internal::Grid_layout layout(box);
-  {
-    std::ostringstream what;
-    what << "a distance field of " << layout.nx << " x " << layout.ny << " x " << layout.nz
-         << " voxels";
-    internal::require_memory(4. * double(layout.volume()), memory_limit, layout.volume(),
-                             caller, what.str());
-  }
+  internal::require_memory(4. * double(layout.volume()), internal::memory_limit(np), layout,
+                           caller, "a distance field");
 
   constexpr std::uint32_t infinity = 0xFFFFFFFFu;
   std::vector<std::uint32_t> d(layout.volume(), 0u);

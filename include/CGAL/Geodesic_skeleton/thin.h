@@ -246,21 +246,11 @@ template <typename VoxelSet, typename NamedParameters = CGAL::parameters::Defaul
 std::size_t thin(VoxelSet& voxels, const Voxel_distance_field& distances,
                  const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
   const char* caller = "thin";
-  const double memory_limit = choose_parameter(get_parameter(np, internal_np::memory_limit_tag),
-                                               default_voxel_memory_limit);
   const Voxel_box box = internal::require_nonempty_box(voxels, 2, caller);
   const internal::Grid_layout layout(box);
-  {
-    std::ostringstream what;
-    what << "thinning a box of " << layout.nx << " x " << layout.ny << " x " << layout.nz
-         << " voxels";
-    internal::require_memory(5. * double(layout.volume()) +
-                                 12. * double(voxels.size()),
-                             memory_limit, layout.volume(), caller, what.str());
-  }
+  internal::require_memory(5. * double(layout.volume()) + 12. * double(voxels.size()),
+                           internal::memory_limit(np), layout, caller, "thinning a box");
 
   const std::vector<std::uint32_t> copied_d2 = internal::distances_over(distances, layout);
   const std::uint32_t* d2 = copied_d2.data();

@@ -139,19 +139,13 @@ void to_graph(const VoxelSet& skeleton, const Voxel_distance_field& distances,
   using Vertex_bundle = typename boost::vertex_bundle_type<Graph>::type;
   using Point = decltype(Vertex_bundle::point);
   const char* caller = "to_graph";
-  const double memory_limit = choose_parameter(get_parameter(np, internal_np::memory_limit_tag),
-                                               default_voxel_memory_limit);
 
   const Voxel_box skeleton_box = internal::require_nonempty_box(skeleton, 1, caller);
   const internal::Grid_layout nodes_layout(skeleton_box);
   const internal::Grid_layout solid_layout(distances.box());
-  {
-    std::ostringstream what;
-    what << "the graph of a skeleton in a box of " << nodes_layout.nx << " x "
-         << nodes_layout.ny << " x " << nodes_layout.nz << " voxels";
-    internal::require_memory(4. * double(nodes_layout.volume() + solid_layout.volume()),
-                             memory_limit, nodes_layout.volume(), caller, what.str());
-  }
+  internal::require_memory(4. * double(nodes_layout.volume() + solid_layout.volume()),
+                           internal::memory_limit(np), nodes_layout, caller,
+                           "the graph of a skeleton in a box");
 
   // Nodes, in increasing voxel order.
   std::vector<Voxel_key> nodes;

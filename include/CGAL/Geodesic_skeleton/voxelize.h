@@ -308,8 +308,6 @@ std::size_t voxelize(const FaceGraph& mesh, VoxelSet& voxels,
 
   const int resolution =
       choose_parameter(get_parameter(np, internal_np::resolution_tag), default_voxel_resolution);
-  const double memory_limit = choose_parameter(get_parameter(np, internal_np::memory_limit_tag),
-                                               default_voxel_memory_limit);
   const bool fill_holes =
       choose_parameter(get_parameter(np, internal_np::fill_holes_tag), true);
   if(resolution < 4 || resolution > 8192)
@@ -328,13 +326,8 @@ std::size_t voxelize(const FaceGraph& mesh, VoxelSet& voxels,
   if(fill_holes)
     internal::close_holes(mesh, vpm, triangles);
   const internal::Grid_layout layout(box);
-  {
-    std::ostringstream what;
-    what << "a grid of " << layout.nx << " x " << layout.ny << " x " << layout.nz
-         << " voxels (resolution " << resolution << ")";
-    internal::require_memory(6. * double(layout.volume()), memory_limit, layout.volume(),
-                             caller, what.str());
-  }
+  internal::require_memory(6. * double(layout.volume()), internal::memory_limit(np), layout,
+                           caller, "a grid (resolution " + std::to_string(resolution) + ")");
 
   std::vector<std::uint8_t> labels(layout.volume(), internal::EMPTY);
   internal::rasterize(triangles, frame, layout, labels);

@@ -11,17 +11,72 @@
 #include <CGAL/Geodesic_skeleton/to_graph.h>
 #include <CGAL/Geodesic_skeleton/voxelize.h>
 
+#include <Geodesic_skeleton_test/shapes.h>
+
+#include <CGAL/Aff_transformation_3.h>
+
 #include <boost/graph/connected_components.hpp>
 
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <random>
+#include <set>
+#include <string>
 #include <unordered_set>
 #include <vector>
 
 namespace Geodesic_skeleton_test {
 
 namespace gs = CGAL::Geodesic_skeleton;
+
+// A mesh of type Mesh built from a soup.
+template <typename Mesh>
+Mesh mesh_of(const Soup& soup)
+{
+  Mesh m;
+  soup_to_mesh(soup, m);
+  return m;
+}
+
+// A demo mesh of type Mesh.
+template <typename Mesh>
+Mesh demo_mesh(const std::string& name)
+{
+  Mesh m;
+  read_demo_mesh(name, m);
+  return m;
+}
+
+// The keys of a voxel set, ordered.
+template <typename VoxelSet>
+std::set<gs::Voxel_key> keys_of(const VoxelSet& s)
+{
+  std::set<gs::Voxel_key> keys;
+  s.for_each([&](const gs::Voxel_key& k) { keys.insert(k); });
+  return keys;
+}
+
+// A random rotation (a uniform random unit quaternion) followed by the translation (tx, ty, tz).
+template <typename Kernel>
+CGAL::Aff_transformation_3<Kernel> random_rigid_motion(unsigned seed, double tx, double ty, double tz)
+{
+  std::mt19937 random(seed);
+  std::normal_distribution<double> normal;
+  double q[4], n = 0;
+  for(double& c : q)
+  {
+    c = normal(random);
+    n += c * c;
+  }
+  for(double& c : q)
+    c /= std::sqrt(n);
+  const double w = q[0], x = q[1], y = q[2], z = q[3];
+  return CGAL::Aff_transformation_3<Kernel>(
+      1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w), tx,
+      2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w), ty,
+      2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y), tz);
+}
 
 // Euler characteristic of the union of the closed unit cubes of the voxels (the topology
 // of a 26-connected set): vertices - edges + faces - cubes, counted on the doubled grid.

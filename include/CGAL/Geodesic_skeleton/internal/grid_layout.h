@@ -5,6 +5,7 @@
 #define CGAL_GEODESIC_SKELETON_INTERNAL_GRID_LAYOUT_H
 
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
+#include <CGAL/Geodesic_skeleton/parameters.h>
 
 #include <array>
 #include <cstddef>
@@ -86,25 +87,35 @@ inline const std::array<int, 6>& face_neighbour_positions()
   return positions;
 }
 
+// The `memory_limit` named parameter (bytes), or its default.
+template <typename NamedParameters>
+double memory_limit(const NamedParameters& np)
+{
+  return CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, internal_np::memory_limit_tag), default_voxel_memory_limit);
+}
+
 // Throws std::length_error, naming the bytes needed, when `bytes` exceeds `limit`, or when
-// the box is too big to be indexed with 32-bit indices.
-inline void require_memory(double bytes, double limit, std::size_t box_volume,
+// the box of `layout` is too big to be indexed with 32-bit indices. The message reads
+// "<caller>: <what> of NX x NY x NZ voxels needs about ... bytes".
+inline void require_memory(double bytes, double limit, const Grid_layout& layout,
                            const std::string& caller, const std::string& what)
 {
-  if(double(box_volume) >= double(std::numeric_limits<std::uint32_t>::max()))
+  std::ostringstream msg;
+  msg.precision(4);
+  msg << caller << ": " << what << " of " << layout.nx << " x " << layout.ny << " x "
+      << layout.nz << " voxels";
+  if(double(layout.nx) * double(layout.ny) * double(layout.nz) >=
+     double(std::numeric_limits<std::uint32_t>::max()))
   {
-    std::ostringstream msg;
-    msg << caller << ": " << what << " has " << double(box_volume)
-        << " voxels, more than the 2^32 - 1 that the voxel algorithms index; lower the "
+    msg << " has more than the 2^32 - 1 voxels that the voxel algorithms index; lower the "
            "resolution";
     throw std::length_error(msg.str());
   }
   if(bytes > limit)
   {
-    std::ostringstream msg;
-    msg.precision(4);
-    msg << caller << ": " << what << " needs about " << bytes << " bytes ("
-        << bytes / (1024. * 1024.) << " MiB), more than the memory limit of " << limit
+    msg << " needs about " << bytes << " bytes (" << bytes / (1024. * 1024.)
+        << " MiB), more than the memory limit of " << limit
         << " bytes; lower the resolution or raise the memory_limit named parameter";
     throw std::length_error(msg.str());
   }
