@@ -33,11 +33,15 @@ inline void lower_envelope_pass(std::uint32_t* data, std::size_t n, std::ptrdiff
                                 std::vector<double>& z)
 {
   constexpr std::uint32_t infinity = 0xFFFFFFFFu;
+  bool all_zero = true;
   for(std::size_t q = 0; q < n; ++q)
   {
     const std::uint32_t value = data[std::ptrdiff_t(q) * stride];
     f[q] = value == infinity ? -1 : std::int64_t(value);
+    all_zero = all_zero && value == 0;
   }
+  if(all_zero)
+    return; // a line outside the solid stays at 0
   std::ptrdiff_t k = -1;
   for(std::int64_t q = 0; q < std::int64_t(n); ++q)
   {
