@@ -204,7 +204,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(the_result_is_thin, VoxelSet, Voxel_set_models)
   int removable = 0;
   s.for_each([&](const gs::Voxel_key& k) {
     const std::uint32_t c = configuration(s, k);
-    removable += test.is_simple(c) && __builtin_popcount(c) != 1;
+    removable += test.is_simple(c) && gs::internal::bit_count(c) != 1;
   });
   BOOST_TEST(removable == 0);
   BOOST_TEST(s.size() > 20u);

@@ -111,15 +111,15 @@ public:
   // threshold `growth` (see on_ridge()).
   bool protected_end(std::size_t i, std::uint32_t config, double growth) const
   {
-    return __builtin_popcount(config) == 1 && on_ridge(i, growth) &&
+    return bit_count(config) == 1 && on_ridge(i, growth) &&
            !is_end_point(sole_neighbour(i, config));
   }
 
   std::size_t sole_neighbour(std::size_t i, std::uint32_t config) const
   {
-    return std::size_t(std::ptrdiff_t(i) + m_offsets[__builtin_ctz(config)]);
+    return std::size_t(std::ptrdiff_t(i) + m_offsets[lowest_bit(config)]);
   }
-  bool is_end_point(std::size_t i) const { return __builtin_popcount(configuration(i)) == 1; }
+  bool is_end_point(std::size_t i) const { return bit_count(configuration(i)) == 1; }
 
   // Whether the medial ball of i is not swallowed by a neighbour's: no voxel q one or two
   // steps away along the 26 directions (two steps smooth the discrete radii) has r(q) >= r(i) + 0.6 |q - i| (a centre of maximal ball, up to the discreteness

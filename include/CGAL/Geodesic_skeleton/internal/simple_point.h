@@ -7,12 +7,32 @@
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 
 #include <array>
+#include <bitset>
 #include <cstdint>
 #include <cstdlib>
 
 namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
+
+// Number of set bits of a neighbourhood mask.
+inline int bit_count(std::uint32_t mask) { return int(std::bitset<32>(mask).count()); }
+
+// Index of the lowest set bit of a non-zero mask.
+inline int lowest_bit(std::uint32_t mask)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  return __builtin_ctz(mask);
+#else
+  int i = 0;
+  while(!(mask & 1u))
+  {
+    mask >>= 1;
+    ++i;
+  }
+  return i;
+#endif
+}
 
 // The simple-point test of digital topology with 26-connectivity for the object and
 // 6-connectivity for the background (Bertrand and Malandain 1994): a voxel x of the
@@ -88,7 +108,7 @@ private:
       std::uint32_t next = 0;
       while(frontier != 0)
       {
-        const int i = __builtin_ctz(frontier);
+        const int i = lowest_bit(frontier);
         frontier &= frontier - 1;
         next |= adjacent[i];
       }
