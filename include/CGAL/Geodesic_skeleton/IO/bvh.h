@@ -1,0 +1,168 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_GEODESIC_SKELETON_IO_BVH_H
+#define CGAL_GEODESIC_SKELETON_IO_BVH_H
+
+/// \file IO/bvh.h
+/// Writes a control skeleton as a BVH (Biovision hierarchy) file with a one-frame rest pose.
+
+#include <CGAL/Geodesic_skeleton/Control_skeleton.h>
+
+#include <CGAL/number_utils.h>
+
+#include <array>
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <iomanip>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Geodesic_skeleton {
+namespace IO {
+namespace internal {
+
+template <typename Point>
+struct Bvh_writer
+{
+  const Control_skeleton<Point>& skeleton;
+  std::ostream& os;
+  std::vector<std::vector<std::size_t>> children;
+
+  static std::string joint_name(std::size_t j, Joint_kind kind)
+  {
+    return to_string(kind) + "_" + std::to_string(j);
+  }
+  std::array<double, 3> position(std::size_t j) const
+  {
+    const Point& p = skeleton.joints[j].point;
+    return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+  }
+  void indent(int depth) { os << std::string(2 * static_cast<std::size_t>(depth), ' '); }
+  void offset(int depth, const std::array<double, 3>& d)
+  {
+    indent(depth);
+    os << "OFFSET " << d[0] << ' ' << d[1] << ' ' << d[2] << '\n';
+  }
+
+  // A leaf joint gets an End Site one MAT radius further along its bone: the tip of the
+  // limb's flesh, and a non-zero last bone for tools that drop zero-length bones.
+  std::array<double, 3> end_site(std::size_t j) const
+  {
+    const int parent = skeleton.joints[j].parent;
+    std::array<double, 3> d{0, 0, 0};
+    if(parent < 0)
+      return {0, std::max(skeleton.joints[j].radius, 1e-6), 0};
+    const auto p = position(j), q = position(static_cast<std::size_t>(parent));
+    const double length = std::sqrt(std::pow(p[0] - q[0], 2) + std::pow(p[1] - q[1], 2) + std::pow(p[2] - q[2], 2));
+    const double extent = std::max(skeleton.joints[j].radius, 1e-3 * length);
+    for(int c = 0; c < 3; ++c)
+      d[c] = length > 0 ? (p[c] - q[c]) / length * extent : 0.0;
+    if(length == 0)
+      d[1] = extent;
+    return d;
+  }
+
+  void write_joint(std::size_t j, int depth)
+  {
+    const Control_joint<Point>& joint = skeleton.joints[j];
+    indent(depth);
+    os << (joint.parent < 0 ? "ROOT " : "JOINT ") << joint_name(j, joint.kind) << '\n';
+    indent(depth);
+    os << "{\n";
+    if(joint.parent < 0)
+    {
+      offset(depth + 1, position(j));
+      indent(depth + 1);
+      os << "CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation\n";
+    }
+    else
+    {
+      const auto p = position(j), q = position(static_cast<std::size_t>(joint.parent));
+      offset(depth + 1, {p[0] - q[0], p[1] - q[1], p[2] - q[2]});
+      indent(depth + 1);
+      os << "CHANNELS 3 Zrotation Xrotation Yrotation\n";
+    }
+    for(std::size_t c : children[j])
+      write_joint(c, depth + 1);
+    if(children[j].empty())
+    {
+      indent(depth + 1);
+      os << "End Site\n";
+      indent(depth + 1);
+      os << "{\n";
+      offset(depth + 2, end_site(j));
+      indent(depth + 1);
+      os << "}\n";
+    }
+    indent(depth);
+    os << "}\n";
+  }
+};
+
+} // namespace internal
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// Writes `skeleton` to `os` in the BVH format: the hierarchy of joints with their offsets
+/// from their parents (in the mesh's units and coordinates), then a MOTION section with one
+/// frame, the rest pose (every channel 0). Blender, Maya and MotionBuilder import it as an
+/// armature.
+///
+/// A BVH file holds one hierarchy: with several trees (a mesh of several parts) only the
+/// tree of `skeleton.roots[tree]` is written. Joints are named `<kind>_<index>` (for
+/// example `root_0`, `junction_3`, `end_7`). The root has 6 channels (position, then
+/// rotation in Z, X, Y order), every other joint 3 (rotation). A leaf joint ends with an
+/// End Site one MAT radius further along its bone. Bones cut to break cycles are not
+/// written.
+///
+/// \param os the output stream (its precision is raised to 9 significant digits).
+/// \param skeleton a control skeleton, from `split_into_bones()`.
+/// \param tree which tree to write, an index into `skeleton.roots` (default 0).
+/// \returns `os`.
+/// \throws std::invalid_argument when the skeleton is empty or `tree` is out of range.
+///
+/// \b Complexity: O(J) for J joints.
+template <typename Point>
+std::ostream& write_BVH(std::ostream& os, const Control_skeleton<Point>& skeleton, std::size_t tree = 0)
+{
+  if(skeleton.joints.empty() || tree >= skeleton.roots.size())
+    throw std::invalid_argument("write_BVH: the control skeleton has no tree " + std::to_string(tree));
+  internal::Bvh_writer<Point> writer{skeleton, os, std::vector<std::vector<std::size_t>>(skeleton.joints.size())};
+  for(std::size_t j = 0; j < skeleton.joints.size(); ++j)
+    if(skeleton.joints[j].parent >= 0)
+      writer.children[static_cast<std::size_t>(skeleton.joints[j].parent)].push_back(j);
+
+  const auto old_precision = os.precision(9);
+  os << "HIERARCHY\n";
+  const std::size_t root = skeleton.roots[tree];
+  writer.write_joint(root, 0);
+
+  // Count the channels of the written tree for the motion line.
+  std::size_t joints = 0;
+  std::vector<std::size_t> stack{root};
+  while(!stack.empty())
+  {
+    const std::size_t j = stack.back();
+    stack.pop_back();
+    ++joints;
+    for(std::size_t c : writer.children[j])
+      stack.push_back(c);
+  }
+  os << "MOTION\nFrames: 1\nFrame Time: 0.0333333\n";
+  const std::size_t channels = 6 + 3 * (joints - 1);
+  for(std::size_t c = 0; c < channels; ++c)
+    os << (c == 0 ? "" : " ") << 0;
+  os << '\n';
+  os.precision(old_precision);
+  return os;
+}
+
+} // namespace IO
+} // namespace Geodesic_skeleton
+} // namespace CGAL
+
+#endif // CGAL_GEODESIC_SKELETON_IO_BVH_H

@@ -1,0 +1,223 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_GEODESIC_SKELETON_IO_SVG_PREVIEW_H
+#define CGAL_GEODESIC_SKELETON_IO_SVG_PREVIEW_H
+
+/// \file IO/svg_preview.h
+/// A dependency-free SVG picture of a mesh with its control skeleton drawn over it.
+
+#include <CGAL/Geodesic_skeleton/Control_skeleton.h>
+#include <CGAL/Geodesic_skeleton/internal/principal_frame.h>
+#include <CGAL/Geodesic_skeleton/voxelize.h>
+
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Geodesic_skeleton {
+namespace IO {
+namespace internal {
+
+using Geodesic_skeleton::internal::Vec3;
+
+// One orthographic view: screen x along `right`, screen y along `up`, looking along
+// `right x up`.
+struct Svg_view
+{
+  Vec3 right, up;
+  std::string name;
+};
+
+inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+inline Vec3 cross(const Vec3& a, const Vec3& b)
+{
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+inline std::string joint_colour(Joint_kind kind)
+{
+  switch(kind)
+  {
+    case Joint_kind::root: return "#d62728";
+    case Joint_kind::junction: return "#ff7f0e";
+    case Joint_kind::bend: return "#1f77b4";
+    case Joint_kind::end: return "#2ca02c";
+  }
+  return "#000000";
+}
+
+} // namespace internal
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// Writes an SVG picture of `mesh` with `skeleton` drawn over it, in three orthographic
+/// views along the principal axes of the mesh (side: the two longest axes; top; front).
+///
+/// The mesh is drawn as its front-facing triangles, shaded by the angle to the viewer
+/// (16 grey levels) and painted back to front; consecutive triangles of the same grey are
+/// merged into one path, and coordinates are rounded to a tenth of a pixel, so the file
+/// stays small (about 100 bytes per visible triangle and view). Bones are drawn as the
+/// polylines of their smoothed points, cut bones dashed; joints as dots whose radius is
+/// 0.3 times the joint's MAT radius (at least 2 pixels), coloured by kind: root red,
+/// junction orange, bend blue, end green. "Up" on the picture is opposite to the second
+/// principal axis, which points to the heavier tail of the shape (the legs of an animal).
+///
+/// \tparam FaceGraph a model of `FaceListGraph`.
+/// \param os the output stream.
+/// \param mesh the mesh (any faces; polygons are split into fans).
+/// \param skeleton its control skeleton, in the mesh's coordinates.
+/// \param view_size the width and height of each view, in pixels, in [32, 4096].
+/// \param title a line of text written above the views (escaped), e.g. the file name.
+/// \returns `os`.
+/// \throws std::invalid_argument for a mesh without faces or with a non-finite
+///         coordinate, or a view size out of range.
+///
+/// \b Complexity: O(F log F) for F faces.
+template <typename FaceGraph, typename Point>
+std::ostream& write_svg_preview(std::ostream& os, const FaceGraph& mesh,
+                                const Control_skeleton<Point>& skeleton, int view_size = 360,
+                                const std::string& title = std::string())
+{
+  using internal::Vec3;
+  if(view_size < 32 || view_size > 4096)
+    throw std::invalid_argument("write_svg_preview: the view size must be in [32, 4096] pixels");
+  const auto triangles = Geodesic_skeleton::internal::mesh_triangles(
+      mesh, get(CGAL::vertex_point, mesh), "write_svg_preview");
+  const auto frame = Geodesic_skeleton::internal::principal_frame(triangles, "write_svg_preview");
+  // The second principal axis points to the heavier tail of the shape (the legs of an
+  // animal standing on them), so "up" on the picture is its opposite.
+  const Vec3 a0 = frame.axes[0], a2 = frame.axes[2];
+  const Vec3 up{-frame.axes[1][0], -frame.axes[1][1], -frame.axes[1][2]};
+  const std::array<internal::Svg_view, 3> views{{{a0, up, "side"}, {a0, a2, "top"}, {a2, up, "front"}}};
+
+  // One scale for the three views: the largest extent along any principal axis fits.
+  double extent = 0;
+  Vec3 low{1e300, 1e300, 1e300}, high{-1e300, -1e300, -1e300};
+  for(const auto& t : triangles)
+    for(const Vec3& p : t)
+      for(int a = 0; a < 3; ++a)
+      {
+        const double c = internal::dot(Geodesic_skeleton::internal::sub(p, frame.centroid), frame.axes[a]);
+        low[a] = std::min(low[a], c);
+        high[a] = std::max(high[a], c);
+      }
+  for(int a = 0; a < 3; ++a)
+    extent = std::max(extent, high[a] - low[a]);
+  const double margin = 0.06 * view_size;
+  const double scale = extent > 0 ? (view_size - 2 * margin) / extent : 1.0;
+  const int header = title.empty() ? 0 : 24;
+
+  auto round1 = [](double v) {
+    std::ostringstream s;
+    s.precision(1);
+    s << std::fixed << v;
+    std::string text = s.str();
+    if(text.size() > 2 && text.compare(text.size() - 2, 2, ".0") == 0)
+      text.erase(text.size() - 2);
+    return text;
+  };
+  std::string escaped;
+  for(char c : title)
+    escaped += c == '<' ? std::string("&lt;") : c == '>' ? std::string("&gt;") : c == '&' ? std::string("&amp;") : std::string(1, c);
+
+  os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << 3 * view_size << "\" height=\""
+     << view_size + header << "\" viewBox=\"0 0 " << 3 * view_size << ' ' << view_size + header << "\">\n";
+  os << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  if(header > 0)
+    os << "<text x=\"8\" y=\"17\" font-family=\"sans-serif\" font-size=\"14\">" << escaped << "</text>\n";
+
+  for(std::size_t v = 0; v < views.size(); ++v)
+  {
+    const internal::Svg_view& view = views[v];
+    const Vec3 toward_viewer = internal::cross(view.right, view.up);
+    const double x0 = static_cast<double>(v) * view_size + view_size / 2.0;
+    const double y0 = header + view_size / 2.0;
+    const double cr = internal::dot(frame.centroid, view.right), cu = internal::dot(frame.centroid, view.up);
+    auto screen = [&](const Vec3& p) {
+      return std::array<double, 2>{x0 + scale * (internal::dot(p, view.right) - cr),
+                                   y0 - scale * (internal::dot(p, view.up) - cu)};
+    };
+
+    // Front-facing triangles, back to front, with a grey level from the facing angle.
+    struct Drawn { double depth; int grey; std::size_t index; };
+    std::vector<Drawn> drawn;
+    for(std::size_t i = 0; i < triangles.size(); ++i)
+    {
+      const auto& t = triangles[i];
+      const Vec3 n = internal::cross(Geodesic_skeleton::internal::sub(t[1], t[0]),
+                                     Geodesic_skeleton::internal::sub(t[2], t[0]));
+      const double length = std::sqrt(internal::dot(n, n));
+      if(!(length > 0))
+        continue;
+      const double facing = internal::dot(n, toward_viewer) / length;
+      if(facing <= 0)
+        continue;
+      const double depth = internal::dot(t[0], toward_viewer) + internal::dot(t[1], toward_viewer) +
+                           internal::dot(t[2], toward_viewer);
+      drawn.push_back({depth, static_cast<int>(std::min(15.0, facing * 16)), i});
+    }
+    std::sort(drawn.begin(), drawn.end(), [](const Drawn& a, const Drawn& b) { return a.depth < b.depth; });
+    os << "<g stroke-linejoin=\"round\">\n";
+    for(std::size_t k = 0; k < drawn.size();)
+    {
+      const int grey = drawn[k].grey;
+      const int level = 120 + 8 * grey;
+      os << "<path fill=\"rgb(" << level << ',' << level << ',' << level + 6 << ")\" d=\"";
+      for(; k < drawn.size() && drawn[k].grey == grey; ++k)
+      {
+        const auto& t = triangles[drawn[k].index];
+        for(int c = 0; c < 3; ++c)
+        {
+          const auto s = screen(t[c]);
+          os << (c == 0 ? 'M' : 'L') << round1(s[0]) << ' ' << round1(s[1]);
+        }
+        os << 'Z';
+      }
+      os << "\"/>\n";
+    }
+    os << "</g>\n";
+
+    // The skeleton on top.
+    auto bone_path = [&](const Control_bone<Point>& bone, const char* style) {
+      os << "<polyline fill=\"none\" stroke=\"#111\" stroke-width=\"2\"" << style << " points=\"";
+      for(const Point& p : bone.points)
+      {
+        const auto s = screen(Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
+        os << round1(s[0]) << ',' << round1(s[1]) << ' ';
+      }
+      os << "\"/>\n";
+    };
+    for(const auto& bone : skeleton.bones)
+      bone_path(bone, "");
+    for(const auto& bone : skeleton.cut_bones)
+      bone_path(bone, " stroke-dasharray=\"4 3\"");
+    for(const auto& joint : skeleton.joints)
+    {
+      const auto s = screen(Vec3{CGAL::to_double(joint.point.x()), CGAL::to_double(joint.point.y()),
+                                 CGAL::to_double(joint.point.z())});
+      os << "<circle cx=\"" << round1(s[0]) << "\" cy=\"" << round1(s[1]) << "\" r=\""
+         << round1(std::max(2.0, 0.3 * scale * joint.radius)) << "\" fill=\"" << internal::joint_colour(joint.kind)
+         << "\" fill-opacity=\"0.45\" stroke=\"#111\" stroke-width=\"0.5\"/>\n";
+    }
+    os << "<text x=\"" << static_cast<double>(v) * view_size + 6 << "\" y=\"" << header + view_size - 6
+       << "\" font-family=\"sans-serif\" font-size=\"12\" fill=\"#444\">" << view.name << "</text>\n";
+  }
+  os << "</svg>\n";
+  return os;
+}
+
+} // namespace IO
+} // namespace Geodesic_skeleton
+} // namespace CGAL
+
+#endif // CGAL_GEODESIC_SKELETON_IO_SVG_PREVIEW_H

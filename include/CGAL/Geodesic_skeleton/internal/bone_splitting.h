@@ -1,0 +1,150 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_GEODESIC_SKELETON_INTERNAL_BONE_SPLITTING_H
+#define CGAL_GEODESIC_SKELETON_INTERNAL_BONE_SPLITTING_H
+
+// The recursive split of one branch of a curve skeleton into bones (paper, III.B.ii).
+
+#include <CGAL/Geodesic_skeleton/chord_to_point_distance_accumulation.h>
+
+#include <CGAL/Simple_cartesian.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Geodesic_skeleton {
+namespace internal {
+
+struct Bone_splitting_settings
+{
+  double bend_threshold;           // CPDA value (in chord lengths) that makes a bend a joint
+  double straightness_tolerance;   // allowed deviation from the chord, in MAT radii
+  double minimum_bone_length_factor; // shortest bone, in MAT radii
+  std::vector<double> chord_length_factors; // CPDA chord lengths, in MAT radii
+};
+
+// Distance from p to the segment [a, b].
+inline double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b)
+{
+  const Vec3 ab = minus(b, a), ap = minus(p, a);
+  const double l2 = ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2];
+  double t = l2 > 0 ? (ap[0] * ab[0] + ap[1] * ab[1] + ap[2] * ab[2]) / l2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  const Vec3 q{a[0] + t * ab[0], a[1] + t * ab[1], a[2] + t * ab[2]};
+  return norm(minus(p, q));
+}
+
+class Branch_splitter
+{
+public:
+  Branch_splitter(const std::vector<Vec3>& points, const std::vector<double>& radii,
+                  const Bone_splitting_settings& settings)
+    : m_p(points), m_r(radii), m_settings(settings), m_s(points.size(), 0.0)
+  {
+    for(std::size_t i = 1; i < m_p.size(); ++i)
+      m_s[i] = m_s[i - 1] + norm(minus(m_p[i], m_p[i - 1]));
+  }
+
+  // The indices where the branch is cut into bones, from 0 to N-1 included, increasing.
+  std::vector<std::size_t> joints()
+  {
+    std::vector<std::size_t> cuts{0};
+    if(m_p.size() >= 2)
+    {
+      split(0, m_p.size() - 1, cuts);
+      cuts.push_back(m_p.size() - 1);
+    }
+    return cuts;
+  }
+
+private:
+  double mean_radius(std::size_t i, std::size_t j) const
+  {
+    double sum = 0;
+    for(std::size_t k = i; k <= j; ++k)
+      sum += m_r[k];
+    const double r = sum / static_cast<double>(j - i + 1);
+    // A skeleton without radii still splits, at a scale tied to its length.
+    return std::max(r, 1e-6 * std::max(m_s.back(), 1e-300));
+  }
+
+  // Appends the inner cut points of [i, j] to `cuts`, in increasing order.
+  void split(std::size_t i, std::size_t j, std::vector<std::size_t>& cuts)
+  {
+    if(j <= i + 1)
+      return;
+    const double radius = mean_radius(i, j);
+    const double shortest = m_settings.minimum_bone_length_factor * radius;
+    // Candidates: the inner points that leave both parts at least `shortest` long.
+    std::vector<std::size_t> candidates;
+    for(std::size_t k = i + 1; k < j; ++k)
+      if(m_s[k] - m_s[i] >= shortest && m_s[j] - m_s[k] >= shortest)
+        candidates.push_back(k);
+    if(candidates.empty())
+      return;
+
+    // The accumulation at each point of the part, averaged over the chord lengths.
+    const std::vector<Vec3> part(m_p.begin() + i, m_p.begin() + j + 1);
+    const double part_length = m_s[j] - m_s[i];
+    std::vector<double> bend(part.size(), 0.0);
+    for(double factor : m_settings.chord_length_factors)
+    {
+      const double L = std::min(factor * radius, 0.5 * part_length);
+      if(!(L > 0))
+        continue;
+      std::vector<double> h;
+      chord_to_point_distance_accumulation(as_points(part), L, std::back_inserter(h));
+      for(std::size_t k = 0; k < h.size(); ++k)
+        bend[k] += h[k] / static_cast<double>(m_settings.chord_length_factors.size());
+    }
+
+    std::size_t best = candidates.front();
+    for(std::size_t k : candidates)
+      if(bend[k - i] > bend[best - i])
+        best = k;
+    if(bend[best - i] < m_settings.bend_threshold)
+    {
+      // No marked bend: keep the part as one bone if it is straight enough, else cut it
+      // where it strays farthest from its chord.
+      double deviation = -1;
+      for(std::size_t k : candidates)
+      {
+        const double d = distance_to_segment(m_p[k], m_p[i], m_p[j]);
+        if(d > deviation)
+        {
+          deviation = d;
+          best = k;
+        }
+      }
+      if(deviation <= m_settings.straightness_tolerance * radius)
+        return;
+    }
+    split(i, best, cuts);
+    cuts.push_back(best);
+    split(best, j, cuts);
+  }
+
+  static std::vector<CGAL::Simple_cartesian<double>::Point_3> as_points(const std::vector<Vec3>& v)
+  {
+    std::vector<CGAL::Simple_cartesian<double>::Point_3> out;
+    out.reserve(v.size());
+    for(const Vec3& p : v)
+      out.emplace_back(p[0], p[1], p[2]);
+    return out;
+  }
+
+  const std::vector<Vec3>& m_p;
+  const std::vector<double>& m_r;
+  const Bone_splitting_settings& m_settings;
+  std::vector<double> m_s;
+};
+
+} // namespace internal
+} // namespace Geodesic_skeleton
+} // namespace CGAL
+
+#endif // CGAL_GEODESIC_SKELETON_INTERNAL_BONE_SPLITTING_H

@@ -1,0 +1,128 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_GEODESIC_SKELETON_PRUNE_SKELETON_H
+#define CGAL_GEODESIC_SKELETON_PRUNE_SKELETON_H
+
+/// \file prune_skeleton.h
+/// The paper's pruning of a one-voxel-thick skeleton (Algorithm 1), followed by the
+/// iterative snipping of spurious end branches.
+
+#include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
+#include <CGAL/Geodesic_skeleton/internal/branched_regions.h>
+#include <CGAL/Geodesic_skeleton/internal/spurious_branches.h>
+#include <CGAL/Geodesic_skeleton/parameters.h>
+
+#include <CGAL/property_map.h>
+
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+
+namespace CGAL {
+namespace Geodesic_skeleton {
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// What `prune_skeleton()` did.
+struct Pruning_report
+{
+  std::size_t branched_regions = 0;          ///< branched regions found (step 3)
+  std::size_t removed_branched_points = 0;   ///< branched connection points on no path (step 8)
+  std::size_t snipped_branches = 0;          ///< spurious end branches snipped
+  std::size_t snipped_points = 0;            ///< voxels of those branches
+  std::size_t rounds = 0;                    ///< rounds of pruning and snipping that changed something
+};
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// Prunes a one-voxel-thick curve skeleton in place: the paper's Algorithm 1, then the
+/// snipping of spurious end branches that it calls for, repeated until nothing changes.
+///
+/// Algorithm 1: (1-2) the points are classified by their degree in the 26-neighbourhood
+/// (`classify_skeleton_points()`); (3) the branched connection points are grouped into
+/// branched regions (their 26-connected components); (4) the terminators of a region are
+/// the skeleton points outside it that are 26-adjacent to it (end and middle points, by
+/// Definition 7); (5) the centroid of a region is, following Blum, the region voxel
+/// nearest the mean of its voxels, ties broken by the largest MAT radius, then by the
+/// smallest key; (6-7) Dijkstra from the centroid through the region (26-adjacency, steps
+/// of length 1, sqrt 2 and sqrt 3: a geodesic inside the skeleton) gives a shortest path
+/// to each terminator; (8) the region points on no path are removed.
+///
+/// Snipping (the paper's "iteratively snip off the spurious skeleton joints"): an end branch (the voxels from an end point to the first point of degree 3
+/// or more, the junction) is removed when its arc length is shorter than
+/// `spur_length_factor` times the MAT radius at the junction, i.e. when it does not reach
+/// out of the thickness it grows from, as the twigs that surface noise makes do. Branches
+/// are snipped shortest first (relative to the radius), each only while three branches or
+/// more leave its junction (the 26-connected cluster of points of degree 3 or more where
+/// it hangs), so a branch is snipped only when the skeleton goes on past its junction. Algorithm 1 and one round of snipping alternate until neither changes
+/// anything (a snipped twig can leave a small branched cluster where it hung).
+///
+/// The result is deterministic (it does not depend on the set's iteration order).
+/// Pruning never disconnects a component (every terminator stays linked to its
+/// region's centroid and a snipped branch hangs by one junction), never opens a cycle
+/// that passes through a region (the cycle's two terminators stay linked through the
+/// centroid) and never snips a path component (no junction).
+///
+/// \tparam VoxelSet a model of `VoxelSet`.
+/// \param skeleton a one-voxel-thick skeleton, e.g. from thinning; modified in place.
+/// \param np optional named parameters among:
+///   - `mat_radius_map` (package parameter): a readable property map from `Voxel_key` to
+///     the radius of the medial axis transform there, in voxels (e.g. the square root of
+///     the squared distance transform) (default: 1 voxel everywhere, which makes the
+///     snipping threshold an absolute length in voxels).
+///   - `spur_length_factor` (package parameter): the threshold of the snipping, in MAT radii
+///     at the junction; in [0, 100]; 0 turns snipping off (default: 1.2).
+///
+/// \returns what was removed, and how many rounds of snipping were made.
+/// \throws std::invalid_argument when `spur_length_factor` is out of range or a radius is
+///         negative or not finite.
+///
+/// \b Complexity: O(N log N) for N skeleton voxels per round of snipping (one Dijkstra per
+/// region, over the region), a few rounds in practice.
+template <typename VoxelSet, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Pruning_report prune_skeleton(VoxelSet& skeleton,
+                              const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+
+  const double factor = choose_parameter(get_parameter(np, internal_np::spur_length_factor_tag), 1.2);
+  if(!(factor >= 0 && factor <= 100))
+    throw std::invalid_argument("prune_skeleton: spur_length_factor must be in [0, 100], got " +
+                                std::to_string(factor));
+  const auto radius_map = choose_parameter(get_parameter(np, internal_np::mat_radius_map_tag),
+                                           CGAL::Constant_property_map<Voxel_key, double>(1.0));
+  auto radius = [&](const Voxel_key& k) {
+    const double r = static_cast<double>(get(radius_map, k));
+    if(!(r >= 0) || !std::isfinite(r))
+      throw std::invalid_argument("prune_skeleton: the MAT radius map gives a negative or "
+                                  "non-finite radius");
+    return r;
+  };
+
+  // Snipping a twig can leave a small cluster of branched points where it hung, and
+  // Algorithm 1 can turn a junction into a plain end branch: alternate the two until
+  // neither changes anything.
+  Pruning_report report;
+  for(bool first = true;; first = false)
+  {
+    const internal::Branched_region_pruning pruned = internal::prune_branched_regions(skeleton, radius);
+    if(first)
+      report.branched_regions = pruned.regions;
+    report.removed_branched_points += pruned.removed_points;
+    internal::Snipping snipped;
+    if(factor > 0)
+      snipped = internal::snip_spurious_branches_once(skeleton, radius, factor);
+    report.snipped_branches += snipped.branches;
+    report.snipped_points += snipped.points;
+    if(pruned.removed_points == 0 && snipped.branches == 0)
+      break;
+    ++report.rounds;
+  }
+  return report;
+}
+
+} // namespace Geodesic_skeleton
+} // namespace CGAL
+
+#endif // CGAL_GEODESIC_SKELETON_PRUNE_SKELETON_H

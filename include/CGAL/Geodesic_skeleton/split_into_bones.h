@@ -1,0 +1,186 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_GEODESIC_SKELETON_SPLIT_INTO_BONES_H
+#define CGAL_GEODESIC_SKELETON_SPLIT_INTO_BONES_H
+
+/// \file split_into_bones.h
+/// The split of a smoothed curve skeleton into the joints and bones of a control skeleton
+/// (paper, section III.B.ii and Algorithm 2).
+
+#include <CGAL/Geodesic_skeleton/Control_skeleton.h>
+#include <CGAL/Geodesic_skeleton/internal/bone_splitting.h>
+#include <CGAL/Geodesic_skeleton/internal/control_tree.h>
+#include <CGAL/Geodesic_skeleton/internal/skeleton_branches.h>
+#include <CGAL/Geodesic_skeleton/parameters.h>
+
+#include <CGAL/number_utils.h>
+
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Geodesic_skeleton {
+namespace internal {
+
+inline void require_in_range(double value, double low, double high, const char* name)
+{
+  if(!(value >= low && value <= high))
+    throw std::invalid_argument(std::string("split_into_bones: ") + name + " must be in [" +
+                                std::to_string(low) + ", " + std::to_string(high) + "], got " +
+                                std::to_string(value));
+}
+
+template <typename NamedParameters>
+Bone_splitting_settings bone_splitting_settings(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Bone_splitting_settings s{
+      choose_parameter(get_parameter(np, internal_np::bend_threshold_tag), 0.08),
+      choose_parameter(get_parameter(np, internal_np::straightness_tolerance_tag), 0.5),
+      choose_parameter(get_parameter(np, internal_np::minimum_bone_length_factor_tag), 2.0),
+      choose_parameter(get_parameter(np, internal_np::chord_length_factors_tag),
+                       std::vector<double>{3.0, 6.0})};
+  require_in_range(s.bend_threshold, 0, 1, "bend_threshold");
+  require_in_range(s.straightness_tolerance, 0, 100, "straightness_tolerance");
+  require_in_range(s.minimum_bone_length_factor, 0, 1000, "minimum_bone_length_factor");
+  if(s.chord_length_factors.empty())
+    throw std::invalid_argument("split_into_bones: chord_length_factors must not be empty");
+  for(double f : s.chord_length_factors)
+    require_in_range(f, 1e-3, 1000, "each of chord_length_factors");
+  return s;
+}
+
+} // namespace internal
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// Splits a (smoothed) curve skeleton into the joints and bones of an animation control
+/// skeleton, a rooted tree per connected component.
+///
+/// 1. The end points and junctions of the curve skeleton (vertices of degree other than 2)
+///    are the initial joints (paper, III.B.ii). They cut the skeleton into branches; a
+///    closed loop without junction gets one joint, at its thickest point.
+/// 2. Each branch is split recursively. In a part of the branch, the chord-to-point
+///    distance accumulation (`chord_to_point_distance_accumulation()`) is computed for
+///    chords of arc length `chord_length_factors` times the mean MAT radius of the part
+///    (capped at half the part's length) and averaged over those lengths, as in
+///    multi-scale CPDA corner detection. Where it peaks at `bend_threshold` or more, a
+///    bend joint splits the part in two. Without such a peak, a part that strays from its
+///    chord by more than `straightness_tolerance` MAT radii is split where it strays
+///    farthest; otherwise it is one bone. No split leaves a bone shorter than
+///    `minimum_bone_length_factor` MAT radii. The split recurses into both halves.
+/// 3. Each component is rooted at its most central junction: the junction whose farthest
+///    joint, along the bones, is nearest (the centre of the graph; ties go to the larger
+///    radius). For a character it is the torso, and it gives the shallowest hierarchy,
+///    which keeps chains of transforms short for animation. A component without junction
+///    is rooted at its central joint. Bones follow the shortest paths from the root; when
+///    the shape has handles, the bones left off those paths (one per independent cycle)
+///    are recorded in `Control_skeleton::cut_bones`.
+///
+/// \tparam CurveSkeleton a `boost::adjacency_list` with `vecS` vertex storage whose vertex
+///         bundle has a `point` (a CGAL point) and a `radius` (`double`, world units), e.g.
+///         `Curve_skeleton<Point, MeshVertex>`, usually after `smooth_skeleton()`.
+/// \tparam Point the point type of the output.
+/// \param skeleton the curve skeleton.
+/// \param control receives the control skeleton (cleared first); empty for an empty
+///        skeleton.
+/// \param np optional named parameters among:
+///   - `bend_threshold` (package parameter): the accumulation, in chord lengths, that
+///     makes a bend a joint, in [0, 1] (default 0.08: a corner turning by 28 degrees
+///     reaches it; 20 degrees give 0.058, a right angle 0.217).
+///   - `straightness_tolerance` (package parameter): in MAT radii, in [0, 100] (default 0.5).
+///   - `minimum_bone_length_factor` (package parameter): in MAT radii, in [0, 1000]
+///     (default 2).
+///   - `chord_length_factors` (package parameter): a `std::vector<double>` of chord
+///     lengths in MAT radii, each in [0.001, 1000] (default {3, 6}).
+///
+/// \throws std::invalid_argument when a parameter is out of range.
+///
+/// \b Complexity: O(N log N * c) for N skeleton vertices and c chords per point in
+/// practice (each recursion level scans its part), plus O(J B log B) to root the J joints
+/// and B bones.
+template <typename CurveSkeleton, typename Point,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+void split_into_bones(const CurveSkeleton& skeleton, Control_skeleton<Point>& control,
+                      const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const internal::Bone_splitting_settings settings = internal::bone_splitting_settings(np);
+  control.clear();
+  const std::size_t n = num_vertices(skeleton);
+  if(n == 0)
+    return;
+
+  internal::Joint_graph<Point> graph;
+  std::vector<long> joint_of(n, -1);
+  auto position = [&](std::size_t v) {
+    const auto& p = skeleton[v].point;
+    return internal::Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+  };
+  auto add_joint = [&](std::size_t v, Joint_kind kind) {
+    if(joint_of[v] < 0)
+    {
+      const internal::Vec3 p = position(v);
+      Control_joint<Point> joint;
+      joint.point = Point(p[0], p[1], p[2]);
+      joint.radius = skeleton[v].radius;
+      joint.kind = kind;
+      joint.skeleton_vertex = v;
+      joint_of[v] = static_cast<long>(graph.joints.size());
+      graph.joints.push_back(joint);
+    }
+    return static_cast<std::size_t>(joint_of[v]);
+  };
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    const std::size_t d = boost::degree(v, skeleton);
+    if(d != 2)
+      add_joint(v, d >= 3 ? Joint_kind::junction : Joint_kind::end);
+  }
+
+  for(internal::Skeleton_branch branch : internal::skeleton_branches(skeleton))
+  {
+    std::vector<std::size_t>& b = branch.vertices;
+    if(branch.closed) // start and end the loop at its thickest vertex, a joint
+    {
+      std::size_t thickest = 0;
+      for(std::size_t k = 1; k < b.size(); ++k)
+        if(skeleton[b[k]].radius > skeleton[b[thickest]].radius)
+          thickest = k;
+      std::rotate(b.begin(), b.begin() + static_cast<long>(thickest), b.end());
+      b.push_back(b.front());
+      add_joint(b.front(), Joint_kind::bend);
+    }
+    std::vector<internal::Vec3> points;
+    std::vector<double> radii;
+    for(std::size_t v : b)
+    {
+      points.push_back(position(v));
+      radii.push_back(skeleton[v].radius);
+    }
+    internal::Branch_splitter splitter(points, radii, settings);
+    const std::vector<std::size_t> cuts = splitter.joints();
+    for(std::size_t c = 0; c + 1 < cuts.size(); ++c)
+    {
+      Control_bone<Point> bone;
+      bone.parent = add_joint(b[cuts[c]], Joint_kind::bend);
+      bone.child = add_joint(b[cuts[c + 1]], Joint_kind::bend);
+      for(std::size_t k = cuts[c]; k <= cuts[c + 1]; ++k)
+      {
+        bone.points.emplace_back(points[k][0], points[k][1], points[k][2]);
+        if(k > cuts[c])
+          bone.length += internal::norm(internal::minus(points[k], points[k - 1]));
+      }
+      graph.bones.push_back(std::move(bone));
+    }
+  }
+  control = internal::root_joint_graph(graph);
+}
+
+} // namespace Geodesic_skeleton
+} // namespace CGAL
+
+#endif // CGAL_GEODESIC_SKELETON_SPLIT_INTO_BONES_H

@@ -1,0 +1,355 @@
+// Specification of smooth_skeleton.h, chord_to_point_distance_accumulation.h and
+// split_into_bones.h, on hand-made curve skeletons (polylines with a MAT radius).
+#include <CGAL/Geodesic_skeleton/Control_skeleton.h>
+#include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
+#include <CGAL/Geodesic_skeleton/chord_to_point_distance_accumulation.h>
+#include <CGAL/Geodesic_skeleton/smooth_skeleton.h>
+#include <CGAL/Geodesic_skeleton/split_into_bones.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Random.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace gs = CGAL::Geodesic_skeleton;
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Skeleton = gs::Curve_skeleton<Point, int>;
+using Control = gs::Control_skeleton<Point>;
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+// Points from `from` to `to` spaced by about `step`, `from` included, `to` excluded.
+void add_segment(std::vector<Point>& points, const Point& from, const Point& to, double step)
+{
+  const int count = std::max(1, static_cast<int>(std::round(std::sqrt(CGAL::squared_distance(from, to)) / step)));
+  for(int i = 0; i < count; ++i)
+    points.push_back(from + (to - from) * (double(i) / count));
+}
+
+std::vector<Point> polyline(const std::vector<Point>& corners, double step)
+{
+  std::vector<Point> points;
+  for(std::size_t i = 0; i + 1 < corners.size(); ++i)
+    add_segment(points, corners[i], corners[i + 1], step);
+  points.push_back(corners.back());
+  return points;
+}
+
+// Appends a chain of skeleton vertices along `points`; returns their indices.
+std::vector<std::size_t> add_chain(Skeleton& s, const std::vector<Point>& points, double radius,
+                                   long attach_to = -1)
+{
+  std::vector<std::size_t> ids;
+  for(const Point& p : points)
+  {
+    const std::size_t v = add_vertex(s);
+    s[v].point = p;
+    s[v].radius = radius;
+    if(!ids.empty())
+      add_edge(ids.back(), v, s);
+    else if(attach_to >= 0)
+      add_edge(static_cast<std::size_t>(attach_to), v, s);
+    ids.push_back(v);
+  }
+  return ids;
+}
+
+Skeleton chain_skeleton(const std::vector<Point>& points, double radius)
+{
+  Skeleton s;
+  add_chain(s, points, radius);
+  return s;
+}
+
+Control bones_of(const Skeleton& s)
+{
+  Control control;
+  gs::split_into_bones(s, control);
+  return control;
+}
+
+std::vector<double> accumulation(const std::vector<Point>& points, double L, bool closed = false)
+{
+  std::vector<double> h;
+  gs::chord_to_point_distance_accumulation(points, L, std::back_inserter(h),
+                                           gs::parameters::closed_polyline(closed));
+  return h;
+}
+
+double distance(const Point& a, const Point& b) { return std::sqrt(CGAL::squared_distance(a, b)); }
+
+// Every joint but the roots has a parent listed before it, and bones link parent to child.
+void check_tree(const Control& c)
+{
+  std::size_t roots = 0;
+  for(std::size_t j = 0; j < c.joints.size(); ++j)
+  {
+    if(c.joints[j].parent < 0)
+    {
+      ++roots;
+      BOOST_TEST((c.joints[j].kind == gs::Joint_kind::root));
+    }
+    else
+      BOOST_TEST(std::size_t(c.joints[j].parent) < j);
+  }
+  BOOST_TEST(roots == c.roots.size());
+  BOOST_TEST(c.bones.size() + c.roots.size() == c.joints.size());
+  for(const auto& bone : c.bones)
+  {
+    BOOST_TEST(c.joints[bone.child].parent == int(bone.parent));
+    BOOST_TEST(distance(bone.points.front(), c.joints[bone.parent].point) < 1e-9);
+    BOOST_TEST(distance(bone.points.back(), c.joints[bone.child].point) < 1e-9);
+  }
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(control_skeleton)
+
+// --- smooth_skeleton -------------------------------------------------------------------
+
+BOOST_AUTO_TEST_CASE(smoothing_averages_five_points_and_keeps_ends_fixed)
+{
+  std::vector<Point> zigzag;
+  for(int i = 0; i < 12; ++i)
+    zigzag.emplace_back(i, (i % 2) ? 1.0 : 0.0, 0);
+  Skeleton s = chain_skeleton(zigzag, 1.0);
+  s[5].radius = 6.0;
+  gs::smooth_skeleton(s);
+  BOOST_TEST(distance(s[0].point, zigzag[0]) == 0.0);
+  BOOST_TEST(distance(s[11].point, zigzag[11]) == 0.0);
+  // Equation 3 at i = 5: the mean of points 3..7.
+  BOOST_TEST(s[5].point.x() == 5.0, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(s[5].point.y() == 0.6, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(s[5].radius == 2.0, boost::test_tools::tolerance(1e-12));
+  // Near an end the window shrinks symmetrically: point 1 averages points 0..2.
+  BOOST_TEST(s[1].point.y() == 1.0 / 3.0, boost::test_tools::tolerance(1e-12));
+}
+
+BOOST_AUTO_TEST_CASE(smoothing_keeps_junctions_fixed_and_handles_short_branches)
+{
+  Skeleton s;
+  const auto trunk = add_chain(s, {Point(0, 0, 0), Point(1, 0.5, 0), Point(2, 0, 0), Point(3, 0.5, 0), Point(4, 0, 0)}, 1.0);
+  add_chain(s, {Point(2, 1, 0), Point(2.5, 2, 0)}, 1.0, long(trunk[2])); // a branch of 2 points
+  const Point junction = s[trunk[2]].point;
+  gs::smooth_skeleton(s);
+  BOOST_TEST(distance(s[trunk[2]].point, junction) == 0.0);
+  BOOST_TEST(s[trunk[1]].point.y() == (0.0 + 0.5 + 0.0) / 3.0, boost::test_tools::tolerance(1e-12));
+  // The short branch (junction, middle, end): its middle averages the three.
+  BOOST_TEST(s[5].point.x() == (2.0 + 2.0 + 2.5) / 3.0, boost::test_tools::tolerance(1e-12));
+}
+
+BOOST_AUTO_TEST_CASE(smoothing_a_closed_loop_wraps_around)
+{
+  std::vector<Point> square;
+  for(const Point& p : polyline({Point(0, 0, 0), Point(4, 0, 0), Point(4, 4, 0), Point(0, 4, 0), Point(0, 0, 0)}, 1))
+    square.push_back(p);
+  square.pop_back(); // closed: the first point is not repeated
+  Skeleton s = chain_skeleton(square, 1.0);
+  add_edge(square.size() - 1, 0, s);
+  gs::smooth_skeleton(s);
+  // The corner (0,0,0) moves inwards to the mean of (0,2),(0,1),(0,0),(1,0),(2,0).
+  BOOST_TEST(s[0].point.x() == 0.6, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(s[0].point.y() == 0.6, boost::test_tools::tolerance(1e-12));
+}
+
+BOOST_AUTO_TEST_CASE(a_window_of_one_changes_nothing_and_bad_windows_throw)
+{
+  Skeleton s = chain_skeleton(polyline({Point(0, 0, 0), Point(5, 3, 0)}, 0.5), 1.0);
+  const Point before = s[4].point;
+  gs::smooth_skeleton(s, gs::parameters::smoothing_window(1));
+  BOOST_TEST(distance(s[4].point, before) == 0.0);
+  BOOST_CHECK_THROW(gs::smooth_skeleton(s, gs::parameters::smoothing_window(4)), std::invalid_argument);
+  BOOST_CHECK_THROW(gs::smooth_skeleton(s, gs::parameters::smoothing_window(0)), std::invalid_argument);
+  BOOST_CHECK_THROW(gs::smooth_skeleton(s, gs::parameters::smoothing_window(-3)), std::invalid_argument);
+}
+
+// --- chord_to_point_distance_accumulation ----------------------------------------------
+
+BOOST_AUTO_TEST_CASE(accumulation_is_zero_on_a_straight_line)
+{
+  for(double h : accumulation(polyline({Point(0, 0, 0), Point(10, 5, -2)}, 0.3), 2.0))
+    BOOST_TEST(h == 0.0, boost::test_tools::tolerance(1e-9));
+}
+
+BOOST_AUTO_TEST_CASE(accumulation_peaks_at_a_right_angle)
+{
+  const std::vector<Point> l_shape = polyline({Point(0, 0, 0), Point(10, 0, 0), Point(10, 10, 0)}, 0.25);
+  const std::vector<double> h = accumulation(l_shape, 4.0);
+  const std::size_t peak = std::max_element(h.begin(), h.end()) - h.begin();
+  BOOST_TEST(distance(l_shape[peak], Point(10, 0, 0)) < 0.3);
+  // The corner's distance to the chord that starts x L before it on the first arm is
+  // L x (1 - x) / sqrt(x^2 + (1 - x)^2); the value is the mean over the 17 chords.
+  double expected = 0;
+  for(int t = 0; t <= 16; ++t)
+  {
+    const double x = t / 16.0;
+    expected += (x == 0 || x == 1) ? 0.0 : x * (1 - x) / std::sqrt(x * x + (1 - x) * (1 - x));
+  }
+  expected /= 17;
+  BOOST_TEST(h[peak] == expected, boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(h[peak] > 0.2);
+}
+
+BOOST_AUTO_TEST_CASE(accumulation_does_not_depend_on_sampling_rotation_or_scale)
+{
+  const std::vector<Point> coarse = polyline({Point(0, 0, 0), Point(8, 0, 0), Point(12, 5, 3)}, 0.5);
+  const std::vector<Point> fine = polyline({Point(0, 0, 0), Point(8, 0, 0), Point(12, 5, 3)}, 0.1);
+  const std::vector<double> hc = accumulation(coarse, 3.0), hf = accumulation(fine, 3.0);
+  BOOST_TEST(*std::max_element(hc.begin(), hc.end()) ==
+                 *std::max_element(hf.begin(), hf.end()), boost::test_tools::tolerance(0.02));
+
+  // Rotated about z by 1 radian, scaled by 7 and moved: the same values.
+  std::vector<Point> moved;
+  for(const Point& p : coarse)
+    moved.emplace_back(7 * (std::cos(1.0) * p.x() - std::sin(1.0) * p.y()) + 3,
+                       7 * (std::sin(1.0) * p.x() + std::cos(1.0) * p.y()) - 2, 7 * p.z() + 1);
+  const std::vector<double> hm = accumulation(moved, 21.0);
+  for(std::size_t i = 0; i < hc.size(); ++i)
+    BOOST_TEST(std::abs(hm[i] - hc[i]) < 1e-9);
+}
+
+BOOST_AUTO_TEST_CASE(accumulation_on_a_closed_square_peaks_at_its_four_corners)
+{
+  std::vector<Point> square = polyline({Point(0, 0, 0), Point(8, 0, 0), Point(8, 8, 0), Point(0, 8, 0), Point(0, 0, 0)}, 0.5);
+  square.pop_back();
+  const std::vector<double> h = accumulation(square, 3.0, true);
+  std::vector<std::size_t> local_maxima;
+  for(std::size_t i = 0; i < h.size(); ++i)
+    if(h[i] > h[(i + h.size() - 1) % h.size()] && h[i] >= h[(i + 1) % h.size()] && h[i] > 0.1)
+      local_maxima.push_back(i);
+  BOOST_TEST(local_maxima.size() == 4u);
+  for(std::size_t i : local_maxima)
+    BOOST_TEST(std::fmod(square[i].x(), 8.0) + std::fmod(square[i].y(), 8.0) == 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(accumulation_rejects_bad_chords)
+{
+  const std::vector<Point> p = polyline({Point(0, 0, 0), Point(1, 0, 0)}, 0.5);
+  std::vector<double> h;
+  BOOST_CHECK_THROW(gs::chord_to_point_distance_accumulation(p, 0.0, std::back_inserter(h)), std::invalid_argument);
+  BOOST_CHECK_THROW(gs::chord_to_point_distance_accumulation(p, std::nan(""), std::back_inserter(h)), std::invalid_argument);
+  BOOST_CHECK_THROW(gs::chord_to_point_distance_accumulation(p, 1.0, std::back_inserter(h), gs::parameters::number_of_chords(0)),
+                    std::invalid_argument);
+  // A polyline shorter than the chord: no chord fits, all zero.
+  h.clear();
+  gs::chord_to_point_distance_accumulation(p, 5.0, std::back_inserter(h));
+  BOOST_TEST(h.size() == p.size());
+  BOOST_TEST(*std::max_element(h.begin(), h.end()) == 0.0);
+}
+
+// --- split_into_bones ------------------------------------------------------------------
+
+BOOST_AUTO_TEST_CASE(a_straight_tube_gives_one_bone)
+{
+  const Control c = bones_of(chain_skeleton(polyline({Point(0, 0, 0), Point(0, 0, 30)}, 0.5), 2.0));
+  BOOST_TEST(c.bones.size() == 1u);
+  BOOST_TEST(c.joints.size() == 2u);
+  check_tree(c);
+}
+
+BOOST_AUTO_TEST_CASE(an_l_shaped_tube_gives_two_bones_with_the_joint_at_the_corner)
+{
+  const double radius = 1.5;
+  const Control c = bones_of(chain_skeleton(polyline({Point(0, 0, 0), Point(20, 0, 0), Point(20, 20, 0)}, 0.5), radius));
+  BOOST_REQUIRE(c.bones.size() == 2u);
+  check_tree(c);
+  bool corner_found = false;
+  for(const auto& j : c.joints)
+    if(distance(j.point, Point(20, 0, 0)) < radius)
+      corner_found = true;
+  BOOST_TEST(corner_found);
+}
+
+BOOST_AUTO_TEST_CASE(a_zigzag_of_k_straight_parts_gives_k_bones)
+{
+  for(int k = 2; k <= 6; ++k)
+  {
+    std::vector<Point> corners;
+    for(int i = 0; i <= k; ++i)
+      corners.emplace_back(12.0 * i, (i % 2) ? 9.0 : 0.0, 0);
+    const Control c = bones_of(chain_skeleton(polyline(corners, 0.4), 1.0));
+    BOOST_TEST(c.bones.size() == std::size_t(k), "zigzag of " << k << " parts");
+    check_tree(c);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(noise_on_a_straight_tube_adds_no_joint)
+{
+  CGAL::Random rng(5);
+  std::vector<Point> noisy;
+  for(const Point& p : polyline({Point(0, 0, 0), Point(40, 0, 0)}, 0.5))
+    noisy.emplace_back(p.x(), p.y() + rng.get_double(-0.3, 0.3), p.z() + rng.get_double(-0.3, 0.3));
+  Skeleton s = chain_skeleton(noisy, 2.0);
+  gs::smooth_skeleton(s);
+  const Control c = bones_of(s);
+  BOOST_TEST(c.bones.size() == 1u);
+}
+
+BOOST_AUTO_TEST_CASE(a_star_is_rooted_at_its_junction)
+{
+  Skeleton s;
+  const auto arm = add_chain(s, polyline({Point(0, 0, 0), Point(15, 0, 0)}, 0.5), 1.0);
+  add_chain(s, polyline({Point(-0.5, 0, 0), Point(-15, 0, 0)}, 0.5), 1.0, long(arm[0]));
+  add_chain(s, polyline({Point(0, 0.5, 0), Point(0, 15, 0)}, 0.5), 1.0, long(arm[0]));
+  s[arm[0]].radius = 3.0;
+  const Control c = bones_of(s);
+  check_tree(c);
+  BOOST_REQUIRE(c.roots.size() == 1u);
+  const auto& root = c.joints[c.roots[0]];
+  BOOST_TEST(distance(root.point, Point(0, 0, 0)) < 1e-9);
+  BOOST_TEST(c.bones.size() == 3u);
+  std::size_t ends = 0;
+  for(const auto& j : c.joints)
+    ends += j.kind == gs::Joint_kind::end;
+  BOOST_TEST(ends == 3u);
+}
+
+BOOST_AUTO_TEST_CASE(the_root_is_the_most_central_junction)
+{
+  // A long chain with two forks: the fork nearer the middle is the root.
+  Skeleton s;
+  const auto spine = add_chain(s, polyline({Point(0, 0, 0), Point(60, 0, 0)}, 1.0), 1.0);
+  add_chain(s, polyline({Point(20, 1, 0), Point(20, 10, 0)}, 1.0), 1.0, long(spine[20]));
+  add_chain(s, polyline({Point(50, 1, 0), Point(50, 10, 0)}, 1.0), 1.0, long(spine[50]));
+  const Control c = bones_of(s);
+  check_tree(c);
+  BOOST_TEST(distance(c.joints[c.roots[0]].point, Point(20, 0, 0)) < 1e-9);
+}
+
+BOOST_AUTO_TEST_CASE(a_loop_is_cut_once_into_a_tree)
+{
+  std::vector<Point> ring;
+  for(int i = 0; i < 120; ++i)
+    ring.emplace_back(10 * std::cos(2 * pi * i / 120), 10 * std::sin(2 * pi * i / 120), 0);
+  Skeleton s = chain_skeleton(ring, 1.0);
+  add_edge(ring.size() - 1, 0, s);
+  const Control c = bones_of(s);
+  check_tree(c);
+  BOOST_TEST(c.cut_bones.size() == 1u);
+  BOOST_TEST(c.bones.size() >= 3u); // a circle is not straight anywhere
+}
+
+BOOST_AUTO_TEST_CASE(bad_parameters_throw)
+{
+  const Skeleton s = chain_skeleton(polyline({Point(0, 0, 0), Point(0, 0, 30)}, 0.5), 2.0);
+  Control c;
+  BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::bend_threshold(-0.1)), std::invalid_argument);
+  BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::straightness_tolerance(std::nan(""))), std::invalid_argument);
+  BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::chord_length_factors(std::vector<double>{})),
+                    std::invalid_argument);
+  BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::minimum_bone_length_factor(-1.0)), std::invalid_argument);
+  Skeleton empty;
+  gs::split_into_bones(empty, c);
+  BOOST_TEST(c.joints.empty());
+}
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -1,0 +1,247 @@
+// Specification of the writers in CGAL/Geodesic_skeleton/IO/: BVH, OBJ, polylines, JSON.
+// The BVH is read back by a small parser written here, from the format's definition.
+#include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
+#include <CGAL/Geodesic_skeleton/IO/bvh.h>
+#include <CGAL/Geodesic_skeleton/IO/json.h>
+#include <CGAL/Geodesic_skeleton/IO/obj.h>
+#include <CGAL/Geodesic_skeleton/IO/polylines.h>
+#include <CGAL/Geodesic_skeleton/split_into_bones.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace gs = CGAL::Geodesic_skeleton;
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Skeleton = gs::Curve_skeleton<Point, int>;
+using Control = gs::Control_skeleton<Point>;
+
+namespace {
+
+// A body with two arms, one bent, and a loop (a handle): a tree with a cut bone.
+Control sample_control_skeleton()
+{
+  Skeleton s;
+  auto chain = [&](Point from, Point to, int steps, long attach) {
+    std::size_t previous = attach >= 0 ? std::size_t(attach) : std::size_t(-1);
+    std::size_t last = 0;
+    for(int i = 0; i <= steps; ++i)
+    {
+      const std::size_t v = add_vertex(s);
+      s[v].point = from + (to - from) * (double(i) / steps);
+      s[v].radius = 1.0;
+      if(previous != std::size_t(-1))
+        add_edge(previous, v, s);
+      previous = last = v;
+    }
+    return last;
+  };
+  const std::size_t hip = chain(Point(0, 0, 0), Point(0, 0, 20), 40, -1);
+  const std::size_t elbow = chain(Point(0.5, 0, 20), Point(15, 0, 20), 30, long(hip));
+  chain(Point(15, 0.5, 20), Point(15, 15, 20), 30, long(elbow));
+  chain(Point(-0.5, 0, 20), Point(-15, 0, 20), 30, long(hip));
+  // A loop hanging from the spine's base.
+  const std::size_t base = 0;
+  std::size_t previous = base;
+  for(int i = 1; i < 40; ++i)
+  {
+    const double a = 2 * 3.14159265358979 * i / 40;
+    const std::size_t v = add_vertex(s);
+    s[v].point = Point(6 * std::sin(a), 0, -6 + 6 * std::cos(a));
+    s[v].radius = 1.0;
+    add_edge(previous, v, s);
+    previous = v;
+  }
+  add_edge(previous, base, s);
+  Control c;
+  gs::split_into_bones(s, c);
+  return c;
+}
+
+struct Bvh_joint
+{
+  std::string name;
+  int parent = -1;
+  double offset[3] = {0, 0, 0};
+  int channels = 0;
+  bool has_end_site = false;
+};
+
+// Parses the HIERARCHY of a BVH file and the number of values of its first frame.
+struct Bvh_file
+{
+  std::vector<Bvh_joint> joints;
+  std::size_t frame_values = 0;
+  int frames = 0;
+
+  explicit Bvh_file(std::istream& is)
+  {
+    std::string word;
+    is >> word;
+    BOOST_REQUIRE_EQUAL(word, "HIERARCHY");
+    std::vector<int> stack; // open joints; -2 marks an End Site block
+    while(is >> word && word != "MOTION")
+    {
+      if(word == "ROOT" || word == "JOINT")
+      {
+        Bvh_joint j;
+        is >> j.name;
+        j.parent = stack.empty() ? -1 : stack.back();
+        joints.push_back(j);
+      }
+      else if(word == "End")
+      {
+        is >> word; // Site
+        joints.at(std::size_t(stack.back())).has_end_site = true;
+        stack.push_back(-2);
+        is >> word; // {
+        BOOST_REQUIRE_EQUAL(word, "{");
+      }
+      else if(word == "{")
+        stack.push_back(int(joints.size()) - 1);
+      else if(word == "}")
+        stack.pop_back();
+      else if(word == "OFFSET")
+      {
+        double o[3];
+        is >> o[0] >> o[1] >> o[2];
+        if(stack.back() >= 0)
+          for(int c = 0; c < 3; ++c)
+            joints[std::size_t(stack.back())].offset[c] = o[c];
+      }
+      else if(word == "CHANNELS")
+      {
+        is >> joints[std::size_t(stack.back())].channels;
+        for(int c = 0; c < joints[std::size_t(stack.back())].channels; ++c)
+          is >> word;
+      }
+    }
+    BOOST_REQUIRE(stack.empty());
+    is >> word >> frames; // Frames: N
+    is >> word >> word >> word; // Frame Time: t
+    std::string line;
+    std::getline(is, line);
+    std::getline(is, line);
+    std::istringstream values(line);
+    double v;
+    while(values >> v)
+      ++frame_values;
+  }
+};
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(io)
+
+BOOST_AUTO_TEST_CASE(a_bvh_read_back_has_the_same_hierarchy_and_offsets)
+{
+  const Control c = sample_control_skeleton();
+  BOOST_REQUIRE(c.joints.size() >= 5u);
+  BOOST_REQUIRE_EQUAL(c.cut_bones.size(), 1u);
+  std::stringstream file;
+  gs::IO::write_BVH(file, c);
+  const Bvh_file bvh(file);
+
+  // Written depth first from the root: map BVH joints back by name (<kind>_<index>).
+  BOOST_REQUIRE_EQUAL(bvh.joints.size(), c.joints.size());
+  std::vector<int> index_of(bvh.joints.size());
+  for(std::size_t b = 0; b < bvh.joints.size(); ++b)
+  {
+    const std::string& name = bvh.joints[b].name;
+    index_of[b] = std::stoi(name.substr(name.rfind('_') + 1));
+    BOOST_TEST(name.substr(0, name.rfind('_')) == gs::to_string(c.joints[std::size_t(index_of[b])].kind));
+  }
+  for(std::size_t b = 0; b < bvh.joints.size(); ++b)
+  {
+    const auto& joint = c.joints[std::size_t(index_of[b])];
+    const Bvh_joint& read = bvh.joints[b];
+    BOOST_TEST((read.parent < 0 ? joint.parent == -1 : joint.parent == index_of[std::size_t(read.parent)]));
+    const Point origin = joint.parent < 0 ? Point(0, 0, 0) : c.joints[std::size_t(joint.parent)].point;
+    BOOST_TEST(read.offset[0] == joint.point.x() - origin.x(), boost::test_tools::tolerance(1e-6));
+    BOOST_TEST(read.offset[1] == joint.point.y() - origin.y(), boost::test_tools::tolerance(1e-6));
+    BOOST_TEST(read.offset[2] == joint.point.z() - origin.z(), boost::test_tools::tolerance(1e-6));
+    BOOST_TEST(read.channels == (joint.parent < 0 ? 6 : 3));
+    // Leaves end with an End Site: the limb tips, and a joint where a cycle was cut.
+    const bool leaf = std::none_of(c.joints.begin(), c.joints.end(), [&](const auto& other) {
+      return other.parent == index_of[b];
+    });
+    BOOST_TEST(read.has_end_site == leaf);
+    if(joint.kind == gs::Joint_kind::end)
+      BOOST_TEST(leaf);
+  }
+  BOOST_TEST(bvh.frames == 1);
+  BOOST_TEST(bvh.frame_values == 6 + 3 * (c.joints.size() - 1));
+}
+
+BOOST_AUTO_TEST_CASE(obj_has_a_vertex_per_joint_and_a_line_per_bone)
+{
+  const Control c = sample_control_skeleton();
+  std::stringstream file;
+  gs::IO::write_OBJ(file, c);
+  std::size_t v = 0, l = 0;
+  std::string line;
+  while(std::getline(file, line))
+  {
+    v += line.rfind("v ", 0) == 0;
+    l += line.rfind("l ", 0) == 0;
+  }
+  BOOST_TEST(v == c.joints.size());
+  BOOST_TEST(l == c.bones.size() + c.cut_bones.size());
+}
+
+BOOST_AUTO_TEST_CASE(polylines_hold_every_bone_point)
+{
+  const Control c = sample_control_skeleton();
+  std::stringstream file;
+  gs::IO::write_polylines(file, c);
+  std::string line;
+  std::size_t polylines = 0;
+  while(std::getline(file, line))
+  {
+    std::istringstream in(line);
+    std::size_t n;
+    in >> n;
+    const auto& bone = polylines < c.bones.size() ? c.bones[polylines] : c.cut_bones[polylines - c.bones.size()];
+    BOOST_TEST(n == bone.points.size());
+    double x, y, z;
+    std::size_t read = 0;
+    while(in >> x >> y >> z)
+      ++read;
+    BOOST_TEST(read == n);
+    ++polylines;
+  }
+  BOOST_TEST(polylines == c.bones.size() + c.cut_bones.size());
+}
+
+BOOST_AUTO_TEST_CASE(json_lists_joints_with_parents_and_kinds)
+{
+  const Control c = sample_control_skeleton();
+  const nlohmann::json j = nlohmann::json::parse(gs::IO::control_skeleton_to_json(c).dump());
+  BOOST_REQUIRE_EQUAL(j.at("joints").size(), c.joints.size());
+  for(std::size_t i = 0; i < c.joints.size(); ++i)
+  {
+    BOOST_TEST(j["joints"][i]["parent"].get<int>() == c.joints[i].parent);
+    BOOST_TEST(j["joints"][i]["kind"].get<std::string>() == gs::to_string(c.joints[i].kind));
+    BOOST_TEST(j["joints"][i]["position"][2].get<double>() == c.joints[i].point.z());
+  }
+  BOOST_TEST(j.at("bones").size() == c.bones.size());
+  BOOST_TEST(j.at("cut_bones").size() == 1u);
+  for(const auto& bone : j["bones"])
+    BOOST_TEST(c.joints[bone[1].get<std::size_t>()].parent == bone[0].get<int>());
+}
+
+BOOST_AUTO_TEST_CASE(an_empty_skeleton_cannot_be_written_as_bvh)
+{
+  std::stringstream file;
+  BOOST_CHECK_THROW(gs::IO::write_BVH(file, Control()), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -1,0 +1,232 @@
+// Specification of CGAL/Geodesic_skeleton/classify_skeleton_points.h and
+// CGAL/Geodesic_skeleton/prune_skeleton.h (the paper's Algorithm 1 and the snipping of
+// spurious branches), on hand-made voxel skeletons and on both VoxelSet models.
+#include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
+#include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
+#include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
+#include <CGAL/Geodesic_skeleton/prune_skeleton.h>
+
+#include <boost/mpl/list.hpp>
+#include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <set>
+#include <unordered_map>
+#include <vector>
+
+namespace gs = CGAL::Geodesic_skeleton;
+using gs::Voxel_key;
+using Voxel_set_models = boost::mpl::list<gs::Dense_voxel_grid, gs::Sparse_voxel_set>;
+
+namespace {
+
+template <typename VoxelSet>
+VoxelSet voxel_set(const std::vector<Voxel_key>& voxels)
+{
+  VoxelSet set;
+  set.reset(gs::Voxel_frame(), gs::Voxel_box{Voxel_key{-20, -20, -20}, Voxel_key{20, 20, 20}});
+  for(const Voxel_key& k : voxels)
+    set.insert(k);
+  return set;
+}
+
+template <typename VoxelSet>
+std::set<Voxel_key> contents(const VoxelSet& set)
+{
+  std::set<Voxel_key> out;
+  set.for_each([&](const Voxel_key& k) { out.insert(k); });
+  return out;
+}
+
+void add_segment(std::vector<Voxel_key>& v, Voxel_key from, Voxel_key step, int count)
+{
+  for(int i = 0; i < count; ++i)
+    v.push_back(Voxel_key{from.x + i * step.x, from.y + i * step.y, from.z + i * step.z});
+}
+
+// Three arms (+x, -x, +y) of 7 voxels leaving a flat 3x3 cluster centred at the origin:
+// a thick junction, as thinning leaves where limbs meet.
+std::vector<Voxel_key> thick_junction_with_three_arms()
+{
+  std::vector<Voxel_key> v;
+  for(int x = -1; x <= 1; ++x)
+    for(int y = -1; y <= 1; ++y)
+      v.push_back(Voxel_key{x, y, 0});
+  add_segment(v, Voxel_key{2, 0, 0}, Voxel_key{1, 0, 0}, 7);
+  add_segment(v, Voxel_key{-2, 0, 0}, Voxel_key{-1, 0, 0}, 7);
+  add_segment(v, Voxel_key{0, 2, 0}, Voxel_key{0, 1, 0}, 7);
+  return v;
+}
+
+// A closed square loop of side 8 in the plane z = 0.
+std::vector<Voxel_key> square_loop()
+{
+  std::vector<Voxel_key> v;
+  add_segment(v, Voxel_key{0, 0, 0}, Voxel_key{1, 0, 0}, 8);
+  add_segment(v, Voxel_key{8, 0, 0}, Voxel_key{0, 1, 0}, 8);
+  add_segment(v, Voxel_key{8, 8, 0}, Voxel_key{-1, 0, 0}, 8);
+  add_segment(v, Voxel_key{0, 8, 0}, Voxel_key{0, -1, 0}, 8);
+  return v;
+}
+
+std::size_t components_of(const std::set<Voxel_key>& voxels)
+{
+  return gs::internal::components_26(std::vector<Voxel_key>(voxels.begin(), voxels.end())).size();
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(prune_skeleton)
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(points_are_classified_as_in_definition_7, VoxelSet, Voxel_set_models)
+{
+  // A path with a clean T junction: (5,0,0) forks to +y.
+  std::vector<Voxel_key> v;
+  add_segment(v, Voxel_key{0, 0, 0}, Voxel_key{1, 0, 0}, 11);
+  add_segment(v, Voxel_key{5, 1, 0}, Voxel_key{0, 1, 0}, 6);
+  v.push_back(Voxel_key{15, 15, 15}); // a lone voxel
+  const VoxelSet skeleton = voxel_set<VoxelSet>(v);
+  std::unordered_map<Voxel_key, gs::Skeleton_point_class, gs::Voxel_key_hash> classes;
+  const gs::Skeleton_point_counts counts =
+      gs::classify_skeleton_points(skeleton, boost::make_assoc_property_map(classes));
+
+  using C = gs::Skeleton_point_class;
+  BOOST_TEST((classes.at(Voxel_key{0, 0, 0}) == C::end));
+  BOOST_TEST((classes.at(Voxel_key{10, 0, 0}) == C::end));
+  BOOST_TEST((classes.at(Voxel_key{5, 6, 0}) == C::end));
+  BOOST_TEST((classes.at(Voxel_key{2, 0, 0}) == C::middle));
+  BOOST_TEST((classes.at(Voxel_key{5, 3, 0}) == C::middle));
+  // (4,0,0), (5,0,0), (6,0,0), (5,1,0) touch each other: degree 3 or 4 with neighbours of
+  // degree 3 or more, so branched connection points.
+  for(const Voxel_key k : {Voxel_key{4, 0, 0}, Voxel_key{5, 0, 0}, Voxel_key{6, 0, 0}, Voxel_key{5, 1, 0}})
+    BOOST_TEST((classes.at(k) == C::branched_connection));
+  BOOST_TEST((classes.at(Voxel_key{15, 15, 15}) == C::isolated));
+  BOOST_TEST(counts.end == 3u);
+  BOOST_TEST(counts.branched_connection == 4u);
+  BOOST_TEST(counts.isolated == 1u);
+  BOOST_TEST(counts.total() == v.size());
+  BOOST_TEST(gs::count_skeleton_points(skeleton).middle == counts.middle);
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(a_connection_point_has_only_end_and_middle_neighbours, VoxelSet, Voxel_set_models)
+{
+  // A star of three diagonal arms from the origin whose first voxels (1,1,0), (-1,1,0) and
+  // (0,-1,1) are pairwise not 26-adjacent: the centre forks cleanly.
+  std::vector<Voxel_key> v{Voxel_key{0, 0, 0}};
+  add_segment(v, Voxel_key{1, 1, 0}, Voxel_key{1, 1, 0}, 3);
+  add_segment(v, Voxel_key{-1, 1, 0}, Voxel_key{-1, 1, 0}, 3);
+  add_segment(v, Voxel_key{0, -1, 1}, Voxel_key{0, -1, 1}, 3);
+  const VoxelSet skeleton = voxel_set<VoxelSet>(v);
+  std::unordered_map<Voxel_key, gs::Skeleton_point_class, gs::Voxel_key_hash> classes;
+  gs::classify_skeleton_points(skeleton, boost::make_assoc_property_map(classes));
+  BOOST_TEST(gs::skeleton_degree(skeleton, Voxel_key{0, 0, 0}) == 3);
+  BOOST_TEST((classes.at(Voxel_key{0, 0, 0}) == gs::Skeleton_point_class::connection));
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(a_thick_junction_is_pruned_to_the_shortest_paths, VoxelSet, Voxel_set_models)
+{
+  VoxelSet skeleton = voxel_set<VoxelSet>(thick_junction_with_three_arms());
+  const gs::Pruning_report report =
+      gs::prune_skeleton(skeleton, gs::parameters::spur_length_factor(0.0));
+
+  // The region is the 3x3 cluster and the three arm voxels touching it; its centroid is the
+  // origin; the shortest paths to the terminators (3,0,0), (-3,0,0), (0,3,0) are straight.
+  std::set<Voxel_key> expected;
+  for(const Voxel_key& k : thick_junction_with_three_arms())
+    expected.insert(k);
+  for(const Voxel_key k : {Voxel_key{-1, -1, 0}, Voxel_key{0, -1, 0}, Voxel_key{1, -1, 0},
+                           Voxel_key{-1, 1, 0}, Voxel_key{1, 1, 0}})
+    expected.erase(k);
+  BOOST_TEST((contents(skeleton) == expected));
+  BOOST_TEST(report.branched_regions == 1u);
+  BOOST_TEST(report.removed_branched_points == 5u);
+  BOOST_TEST(report.snipped_branches == 0u);
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(a_spurious_twig_is_snipped_and_real_limbs_are_kept, VoxelSet, Voxel_set_models)
+{
+  std::vector<Voxel_key> v = thick_junction_with_three_arms();
+  // A twig of two voxels hanging from (5,0,0) towards -y: shorter than the radius there.
+  v.push_back(Voxel_key{5, -1, 0});
+  v.push_back(Voxel_key{5, -2, 0});
+  VoxelSet skeleton = voxel_set<VoxelSet>(v);
+  const auto radius = CGAL::Constant_property_map<Voxel_key, double>(3.0);
+  const gs::Pruning_report report = gs::prune_skeleton(
+      skeleton, gs::parameters::combine(gs::parameters::mat_radius_map(radius),
+                                        gs::parameters::spur_length_factor(1.2)));
+
+  std::set<Voxel_key> expected;
+  for(const Voxel_key& k : thick_junction_with_three_arms())
+    expected.insert(k);
+  for(const Voxel_key k : {Voxel_key{-1, -1, 0}, Voxel_key{0, -1, 0}, Voxel_key{1, -1, 0},
+                           Voxel_key{-1, 1, 0}, Voxel_key{1, 1, 0}})
+    expected.erase(k);
+  const std::set<Voxel_key> left = contents(skeleton);
+  for(const Voxel_key& k : left)
+    BOOST_TEST(expected.count(k) == 1u, k << " is expected");
+  for(const Voxel_key& k : expected)
+    BOOST_TEST(left.count(k) == 1u, k << " is left");
+  BOOST_TEST(report.branched_regions == 2u);
+  BOOST_TEST(report.snipped_branches >= 1u);
+  BOOST_TEST(report.rounds >= 1u);
+  // The three arms (9 voxels from the centre, 3 radii) are real limbs: all ends are kept.
+  BOOST_TEST(gs::count_skeleton_points(skeleton).end == 3u);
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(short_arms_are_snipped_only_while_the_skeleton_goes_on, VoxelSet, Voxel_set_models)
+{
+  // All three arms are shorter than the threshold: the two shortest go, the last stays, so
+  // the skeleton keeps a path rather than vanishing.
+  VoxelSet skeleton = voxel_set<VoxelSet>(thick_junction_with_three_arms());
+  const auto radius = CGAL::Constant_property_map<Voxel_key, double>(100.0);
+  gs::prune_skeleton(skeleton, gs::parameters::mat_radius_map(radius));
+  const std::set<Voxel_key> left = contents(skeleton);
+  BOOST_TEST(left.size() >= 15u); // two arms of 7 and the centre
+  BOOST_TEST(components_of(left) == 1u);
+  BOOST_TEST(gs::count_skeleton_points(skeleton).end == 2u);
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(a_loop_keeps_its_cycle, VoxelSet, Voxel_set_models)
+{
+  // A square loop with a thick corner and a twig: pruning may thin the corner and snip the
+  // twig, never open the loop.
+  std::vector<Voxel_key> v = square_loop();
+  v.push_back(Voxel_key{1, 1, 0});
+  v.push_back(Voxel_key{2, 1, 0});
+  v.push_back(Voxel_key{1, 2, 0});
+  add_segment(v, Voxel_key{4, 1, 0}, Voxel_key{0, 1, 0}, 2); // twig inside the loop
+  VoxelSet skeleton = voxel_set<VoxelSet>(v);
+  gs::prune_skeleton(skeleton, gs::parameters::mat_radius_map(CGAL::Constant_property_map<Voxel_key, double>(2.0)));
+  // The thick corner may be cut diagonally; everything away from it stays.
+  const std::set<Voxel_key> left = contents(skeleton);
+  for(const Voxel_key& k : square_loop())
+    if(k.x + k.y >= 4)
+      BOOST_TEST(left.count(k) == 1u, "loop voxel " << k << " kept");
+  BOOST_TEST(left.count(Voxel_key{4, 1, 0}) == 0u);
+  BOOST_TEST(left.count(Voxel_key{4, 2, 0}) == 0u);
+  BOOST_TEST(components_of(left) == 1u);
+  BOOST_TEST(gs::count_skeleton_points(skeleton).end == 0u);
+  BOOST_TEST(gs::count_skeleton_points(skeleton).isolated == 0u);
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(a_plain_path_is_never_snipped, VoxelSet, Voxel_set_models)
+{
+  std::vector<Voxel_key> v;
+  add_segment(v, Voxel_key{0, 0, 0}, Voxel_key{1, 1, 0}, 4);
+  VoxelSet skeleton = voxel_set<VoxelSet>(v);
+  gs::prune_skeleton(skeleton, gs::parameters::mat_radius_map(CGAL::Constant_property_map<Voxel_key, double>(50.0)));
+  BOOST_TEST(skeleton.size() == 4u);
+}
+
+BOOST_AUTO_TEST_CASE(absurd_parameters_give_clear_exceptions)
+{
+  gs::Sparse_voxel_set skeleton = voxel_set<gs::Sparse_voxel_set>(thick_junction_with_three_arms());
+  BOOST_CHECK_THROW(gs::prune_skeleton(skeleton, gs::parameters::spur_length_factor(-1.0)), std::invalid_argument);
+  BOOST_CHECK_THROW(gs::prune_skeleton(skeleton, gs::parameters::spur_length_factor(std::nan(""))),
+                    std::invalid_argument);
+  BOOST_CHECK_THROW(gs::prune_skeleton(skeleton, gs::parameters::mat_radius_map(
+                                                     CGAL::Constant_property_map<Voxel_key, double>(-2.0))),
+                    std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
