@@ -9,7 +9,12 @@
 /// data flow (DESIGN.md). Include a single stage's header instead to compile less.
 
 #include <CGAL/Geodesic_skeleton/parameters.h>
+
+// Geodesic distances and the Reeb graph.
 #include <CGAL/Geodesic_skeleton/geodesic_distances.h>
+#include <CGAL/Geodesic_skeleton/geodesic_mapping_function.h>
+#include <CGAL/Geodesic_skeleton/integral_geodesic_mapping_function.h>
+#include <CGAL/Geodesic_skeleton/reeb_graph.h>
 
 // The voxel medial axis.
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
@@ -20,7 +25,28 @@
 #include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/thin.h>
+
+// Pruning (Algorithm 1) and the curve skeleton.
+#include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
+#include <CGAL/Geodesic_skeleton/prune_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
 #include <CGAL/Geodesic_skeleton/to_graph.h>
+#include <CGAL/Geodesic_skeleton/skeleton_statistics.h>
+
+// Smoothing and bones.
+#include <CGAL/Geodesic_skeleton/smooth_skeleton.h>
+#include <CGAL/Geodesic_skeleton/chord_to_point_distance_accumulation.h>
+#include <CGAL/Geodesic_skeleton/Control_skeleton.h>
+#include <CGAL/Geodesic_skeleton/split_into_bones.h>
+
+// The whole chain.
+#include <CGAL/Geodesic_skeleton/extract_control_skeleton.h>
+
+// Writers.
+#include <CGAL/Geodesic_skeleton/IO/bvh.h>
+#include <CGAL/Geodesic_skeleton/IO/json.h>
+#include <CGAL/Geodesic_skeleton/IO/obj.h>
+#include <CGAL/Geodesic_skeleton/IO/polylines.h>
+#include <CGAL/Geodesic_skeleton/IO/svg_preview.h>
 
 #endif // CGAL_GEODESIC_SKELETON_H

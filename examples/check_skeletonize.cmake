@@ -1,0 +1,82 @@
+# cmake -DPROGRAM=<skeletonize> -DMESH=<mesh> -DWORK_DIR=<dir> -P check_skeletonize.cmake
+# Runs skeletonize on MESH with every output format and checks the JSON contract's keys,
+# the counts' consistency, and that the other files and the SVG preview are written.
+file(REMOVE_RECURSE ${WORK_DIR})
+file(MAKE_DIRECTORY ${WORK_DIR})
+
+function(run)
+  execute_process(COMMAND ${PROGRAM} ${ARGN} RESULT_VARIABLE result ERROR_VARIABLE err OUTPUT_VARIABLE out)
+  if(NOT result EQUAL 0)
+    message(FATAL_ERROR "skeletonize ${ARGN} failed (${result}):\n${err}")
+  endif()
+  set(stdout "${out}" PARENT_SCOPE)
+endfunction()
+
+run(${MESH} -o ${WORK_DIR}/out.json --svg ${WORK_DIR}/out.svg)
+file(READ ${WORK_DIR}/out.json json)
+foreach(path "input" "mesh;vertices" "mesh;faces" "mesh;closed" "mesh;components" "parameters;resolution"
+             "timings_ms;total" "timings_ms;voxelize" "timings_ms;thin" "timings_ms;prune"
+             "stages;thinned;points" "stages;thinned;end_points" "stages;thinned;junctions" "stages;thinned;cycles"
+             "stages;pruned;points" "stages;pruned;end_points" "stages;pruned;junctions" "stages;pruned;cycles"
+             "stages;reeb;nodes" "stages;reeb;edges" "skeleton;points" "skeleton;radii" "skeleton;edges"
+             "control;joints" "control;bones")
+  string(JSON value ERROR_VARIABLE error GET "${json}" ${path})
+  if(error)
+    message(FATAL_ERROR "the JSON has no key '${path}': ${error}")
+  endif()
+endforeach()
+
+string(JSON joints LENGTH "${json}" control joints)
+string(JSON bones LENGTH "${json}" control bones)
+string(JSON roots LENGTH "${json}" control roots)
+math(EXPR tree_bones "${joints} - ${roots}")
+if(NOT bones EQUAL tree_bones OR bones LESS 1)
+  message(FATAL_ERROR "control skeleton: ${joints} joints, ${roots} roots but ${bones} bones")
+endif()
+string(JSON kind GET "${json}" control joints 0 kind)
+string(JSON parent GET "${json}" control joints 0 parent)
+if(NOT kind STREQUAL "root" OR NOT parent EQUAL -1)
+  message(FATAL_ERROR "the first joint is not a root: kind ${kind}, parent ${parent}")
+endif()
+string(JSON points LENGTH "${json}" skeleton points)
+string(JSON radii LENGTH "${json}" skeleton radii)
+string(JSON pruned GET "${json}" stages pruned points)
+if(NOT points EQUAL radii OR NOT points EQUAL pruned)
+  message(FATAL_ERROR "skeleton: ${points} points, ${radii} radii, pruned stage says ${pruned}")
+endif()
+
+file(READ ${WORK_DIR}/out.svg svg LIMIT 200)
+if(NOT svg MATCHES "^<svg")
+  message(FATAL_ERROR "the preview is not an SVG file")
+endif()
+
+# Without -o the JSON goes to standard output.
+run(${MESH} --resolution 32)
+string(JSON value ERROR_VARIABLE error GET "${stdout}" control bones)
+if(error)
+  message(FATAL_ERROR "no JSON on standard output: ${error}")
+endif()
+
+# The other formats.
+run(${MESH} -o ${WORK_DIR}/out.bvh)
+file(READ ${WORK_DIR}/out.bvh bvh LIMIT 40)
+if(NOT bvh MATCHES "^HIERARCHY\nROOT root_0")
+  message(FATAL_ERROR "the BVH does not start with its root: ${bvh}")
+endif()
+run(${MESH} -o ${WORK_DIR}/out.obj)
+file(STRINGS ${WORK_DIR}/out.obj lines REGEX "^l ")
+list(LENGTH lines obj_bones)
+string(JSON cut_bones LENGTH "${json}" control cut_bones)
+math(EXPR all_bones "${bones} + ${cut_bones}")
+if(NOT obj_bones EQUAL all_bones)
+  message(FATAL_ERROR "the OBJ has ${obj_bones} bone lines, the JSON ${all_bones} bones")
+endif()
+run(${MESH} -o ${WORK_DIR}/out.polylines.txt)
+file(STRINGS ${WORK_DIR}/out.polylines.txt polylines)
+list(LENGTH polylines polyline_count)
+string(JSON cut_bones LENGTH "${json}" control cut_bones)
+math(EXPR all_bones "${bones} + ${cut_bones}")
+if(NOT polyline_count EQUAL all_bones)
+  message(FATAL_ERROR "${polyline_count} polylines for ${all_bones} bones")
+endif()
+message(STATUS "skeletonize: ${joints} joints, ${bones} bones, ${points} skeleton points")

@@ -1,0 +1,251 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_GEODESIC_SKELETON_EXTRACT_CONTROL_SKELETON_H
+#define CGAL_GEODESIC_SKELETON_EXTRACT_CONTROL_SKELETON_H
+
+/// \file extract_control_skeleton.h
+/// The whole chain of the package, mesh to control skeleton, with good defaults.
+
+#include <CGAL/Geodesic_skeleton/Control_skeleton.h>
+#include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
+#include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
+#include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
+#include <CGAL/Geodesic_skeleton/distance_transform.h>
+#include <CGAL/Geodesic_skeleton/geodesic_mapping_function.h>
+#include <CGAL/Geodesic_skeleton/parameters.h>
+#include <CGAL/Geodesic_skeleton/internal/recentre_thin_parts.h>
+#include <CGAL/Geodesic_skeleton/prune_skeleton.h>
+#include <CGAL/Geodesic_skeleton/reeb_graph.h>
+#include <CGAL/Geodesic_skeleton/skeleton_statistics.h>
+#include <CGAL/Geodesic_skeleton/smooth_skeleton.h>
+#include <CGAL/Geodesic_skeleton/split_into_bones.h>
+#include <CGAL/Geodesic_skeleton/thin.h>
+#include <CGAL/Geodesic_skeleton/to_graph.h>
+#include <CGAL/Geodesic_skeleton/voxelize.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Geodesic_skeleton {
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// What `extract_control_skeleton()` did: the sizes of its stages and their times.
+struct Control_skeleton_report
+{
+  int resolution = 0;              ///< voxels along the longest principal axis
+  double voxel_size = 0;           ///< edge of a voxel, in world units
+  std::size_t solid_voxels = 0;    ///< voxels of the solid interior
+  Skeleton_statistics thinned;     ///< the curve skeleton after thinning
+  Skeleton_statistics pruned;      ///< after pruning (Algorithm 1 and snipping)
+  Pruning_report pruning;          ///< what pruning removed
+  std::size_t reeb_nodes = 0;      ///< nodes of the Reeb graph, when one was asked for
+  std::size_t reeb_edges = 0;      ///< arcs of the Reeb graph, when one was asked for
+  /// Wall-clock time of each stage in milliseconds, in the order they ran: "voxelize",
+  /// "distance_transform", "thin", "thinned_graph" (the graph and counts of the thinned
+  /// skeleton), "prune", "to_graph", "smooth", "split_into_bones", and "reeb_graph" when
+  /// asked for.
+  std::vector<std::pair<std::string, double>> timings_ms;
+  double total_ms = 0;             ///< the whole call, in milliseconds
+};
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// The default visitor of `extract_control_skeleton()`: ignores every event. A visitor is
+/// any object with the member function
+/// `void stage_finished(const std::string& stage, double milliseconds)`, called after each
+/// stage (names as in `Control_skeleton_report::timings_ms`), for progress display or
+/// logging.
+struct Default_pipeline_visitor
+{
+  /// Called after each stage.
+  void stage_finished(const std::string&, double) {}
+};
+
+namespace internal {
+
+// The MAT radius of a voxel in voxels, as prune_skeleton() reads it.
+struct Radius_in_voxels_map
+{
+  using key_type = Voxel_key;
+  using value_type = double;
+  using reference = double;
+  using category = boost::readable_property_map_tag;
+  const Voxel_distance_field* field;
+  friend double get(const Radius_in_voxels_map& m, const Voxel_key& k)
+  {
+    return m.field->radius(k) / m.field->frame().voxel_size();
+  }
+};
+
+// Times stages, reports them to the visitor and records them.
+template <typename Visitor>
+class Stage_clock
+{
+public:
+  Stage_clock(Visitor& visitor, Control_skeleton_report& report)
+    : m_visitor(visitor), m_report(report), m_start(Clock::now()), m_stage_start(m_start)
+  {}
+  void finished(const char* stage)
+  {
+    const auto now = Clock::now();
+    const double ms = std::chrono::duration<double, std::milli>(now - m_stage_start).count();
+    m_report.timings_ms.emplace_back(stage, ms);
+    m_visitor.stage_finished(stage, ms);
+    m_stage_start = now;
+    m_report.total_ms = std::chrono::duration<double, std::milli>(now - m_start).count();
+  }
+
+private:
+  using Clock = std::chrono::steady_clock;
+  Visitor& m_visitor;
+  Control_skeleton_report& m_report;
+  Clock::time_point m_start, m_stage_start;
+};
+
+} // namespace internal
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// Extracts the animation control skeleton of a mesh: the whole chain of the package with
+/// good defaults. In order: `voxelize()` (solid interior on a grid aligned with the
+/// principal axes), `distance_transform()` (the MAT radius), `thin()` (grassfire, a
+/// one-voxel-thick curve skeleton), `prune_skeleton()` (the paper's Algorithm 1 and the
+/// snipping of spurious branches), `to_graph()` (the curve skeleton, with the mesh vertices
+/// mapped to it), `smooth_skeleton()` (5-point moving average) and `split_into_bones()`
+/// (joints and bones, rooted at the most central junction).
+///
+/// Between `to_graph()` and `smooth_skeleton()`, a skeleton vertex whose medial radius is
+/// under one voxel (its voxel touches the surface: a limb about a voxel thick) moves from
+/// its voxel centre, which may lie outside the mesh, to the centroid of the mesh vertices
+/// mapped to it and to its neighbours, which ring the limb there (or cap its tip) and so
+/// lie around its axis.
+///
+/// The result is in the mesh's own coordinates and does not change (beyond the rounding
+/// of coordinates) when the mesh is rotated or moved, since the grid follows the mesh's
+/// principal axes.
+///
+/// \tparam FaceGraph a model of `FaceListGraph`: any CGAL mesh, open or closed, in one
+///         piece or many, self-intersecting or not.
+/// \tparam Point the point type of the output.
+/// \param mesh the mesh.
+/// \param out receives the control skeleton (cleared first).
+/// \param np optional named parameters: every parameter of the stages, passed on to them
+///   (`vertex_point_map`, `resolution`, `fill_holes`, `memory_limit` of the voxel stages;
+///   `spur_length_factor` of `prune_skeleton()`; `smoothing_window` of
+///   `smooth_skeleton()`; `bend_threshold`, `straightness_tolerance`,
+///   `minimum_bone_length_factor`, `chord_length_factors` of `split_into_bones()`), and:
+///   - `visitor`: an object with `stage_finished(stage, milliseconds)`, called after each
+///     stage (default: `Default_pipeline_visitor`). It is copied: keep its state behind a
+///     pointer or a reference.
+///   - `curve_skeleton_output` (package parameter): a pointer to a
+///     `Curve_skeleton<Point, vertex_descriptor>` that receives the pruned, smoothed curve
+///     skeleton, with the mesh vertices mapped to its vertices (default: none).
+///   - `thinned_skeleton_output` (package parameter): a pointer to a
+///     `Curve_skeleton<Point, vertex_descriptor>` that receives the skeleton straight
+///     after thinning, before pruning (default: none).
+///   - `reeb_graph_output` (package parameter): a pointer to a `Reeb_graph<FaceGraph>` that
+///     receives the Reeb graph of the geodesic mapping function
+///     (`geodesic_mapping_function()`), the skeleton the paper compares with (default:
+///     none, and no Reeb graph is computed).
+///   - `number_of_reeb_intervals` (package parameter): intervals of that Reeb graph
+///     (default: 30).
+///
+/// \returns the sizes and timings of the stages.
+/// \throws std::invalid_argument for bad input or parameters, with a message naming the
+///         stage and the problem (see each stage): an empty mesh, non-finite coordinates,
+///         a mesh that encloses no volume at the resolution, a parameter out of range.
+/// \throws std::length_error when the voxel grid would need more than `memory_limit`.
+///
+/// \b Complexity: linear in the number of voxels of the grid and the faces and vertices
+/// of the mesh, in practice (see each stage); the Reeb graph adds O((V + E) log V).
+template <typename FaceGraph, typename Point,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_skeleton<Point>& out,
+                                                 const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
+  using Skeleton = Curve_skeleton<Point, vertex_descriptor>;
+
+  Default_pipeline_visitor default_visitor;
+  auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), default_visitor);
+  Control_skeleton_report report;
+  internal::Stage_clock<decltype(visitor)> clock(visitor, report);
+  out.clear();
+
+  Dense_voxel_grid solid;
+  report.solid_voxels = voxelize(mesh, solid, np);
+  report.resolution = choose_parameter(get_parameter(np, internal_np::resolution_tag), default_voxel_resolution);
+  report.voxel_size = solid.frame().voxel_size();
+  clock.finished("voxelize");
+
+  const Voxel_distance_field distances = distance_transform(solid, np);
+  clock.finished("distance_transform");
+
+  thin(solid, distances, np);
+  Sparse_voxel_set skeleton;
+  skeleton.reset(solid.frame(), solid.bounding_box());
+  solid.for_each([&](const Voxel_key& k) { skeleton.insert(k); });
+  clock.finished("thin");
+
+  Skeleton thinned;
+  to_graph(skeleton, distances, mesh, thinned, np);
+  report.thinned = skeleton_statistics(thinned);
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::thinned_skeleton_output_t>::value)
+    *get_parameter(np, internal_np::thinned_skeleton_output_tag) = std::move(thinned);
+  clock.finished("thinned_graph");
+
+  report.pruning = prune_skeleton(
+      skeleton, parameters::combine(parameters::mat_radius_map(internal::Radius_in_voxels_map{&distances}), np));
+  clock.finished("prune");
+
+  Skeleton curve;
+  to_graph(skeleton, distances, mesh, curve, np);
+  // A skeleton vertex whose voxel the surface crosses (radius under one voxel) moves to
+  // the centroid of the mesh vertices around it, inside the thin limb it stands for.
+  internal::recentre_thin_parts(curve,
+                                choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                                 get_const_property_map(CGAL::vertex_point, mesh)),
+                                report.voxel_size);
+  report.pruned = skeleton_statistics(curve);
+  clock.finished("to_graph");
+
+  smooth_skeleton(curve, np);
+  clock.finished("smooth");
+
+  split_into_bones(curve, out, np);
+  clock.finished("split_into_bones");
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::curve_skeleton_output_t>::value)
+    *get_parameter(np, internal_np::curve_skeleton_output_tag) = std::move(curve);
+
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::reeb_graph_output_t>::value)
+  {
+    auto* reeb = get_parameter(np, internal_np::reeb_graph_output_tag);
+    const std::size_t intervals =
+        choose_parameter(get_parameter(np, internal_np::number_of_reeb_intervals_tag), std::size_t(30));
+    const auto vim = CGAL::get_initialized_vertex_index_map(mesh, np);
+    std::vector<double> field(static_cast<std::size_t>(num_vertices(mesh)));
+    auto field_map = boost::make_iterator_property_map(field.begin(), vim);
+    geodesic_mapping_function(mesh, field_map, np);
+    reeb_graph(mesh, field_map, intervals, *reeb, np);
+    report.reeb_nodes = num_vertices(*reeb);
+    report.reeb_edges = num_edges(*reeb);
+    clock.finished("reeb_graph");
+  }
+  return report;
+}
+
+} // namespace Geodesic_skeleton
+} // namespace CGAL
+
+#endif // CGAL_GEODESIC_SKELETON_EXTRACT_CONTROL_SKELETON_H
