@@ -48,7 +48,7 @@ struct Usage_error : std::runtime_error
 
 struct Options
 {
-  std::string input, output, svg;
+  std::string input, output, svg, svg_stage = "control";
   int resolution = gs::default_voxel_resolution;
   double spur_length_factor = 1.2;
   int smoothing_window = 5;
@@ -68,6 +68,8 @@ OFF, OBJ, PLY, STL, ...). Without -o, writes the JSON report to standard output.
                              .json (report and skeletons), .obj (joints and bone lines),
                              .bvh (hierarchy with a rest pose), .polylines.txt (bone polylines)
   --svg PREVIEW.svg          also draw the mesh and its control skeleton in three views
+  --svg-stage STAGE          what the picture shows: control (default), pruned (the smoothed
+                             curve skeleton), thinned (the curve skeleton after thinning), reeb
   --resolution N             voxels along the longest principal axis, 4..8192 (default 64)
   --no-fill-holes            do not close the mesh's holes before voxelizing
   --spur-length F            snip end branches shorter than F MAT radii, 0..100 (default 1.2)
@@ -108,6 +110,7 @@ Options parse_options(int argc, char** argv)
     }
     else if(a == "-o" || a == "--output") o.output = value();
     else if(a == "--svg") o.svg = value();
+    else if(a == "--svg-stage") o.svg_stage = value();
     else if(a == "--resolution") o.resolution = parse_number<int>(a, value());
     else if(a == "--no-fill-holes") o.fill_holes = false;
     else if(a == "--spur-length") o.spur_length_factor = parse_number<double>(a, value());
@@ -195,9 +198,11 @@ int run(const Options& o)
     throw Usage_error(o.output + ": unknown output format (use .json, .obj, .bvh or .polylines.txt)");
   if(!o.svg.empty() && !ends_with(o.svg, ".svg"))
     throw Usage_error(o.svg + ": the preview must be an .svg file");
+  if(o.svg_stage != "control" && o.svg_stage != "pruned" && o.svg_stage != "thinned" && o.svg_stage != "reeb")
+    throw Usage_error("--svg-stage must be control, pruned, thinned or reeb, got '" + o.svg_stage + "'");
 
   const Mesh mesh = read_mesh(o.input);
-  gs::Curve_skeleton<Point, vertex_descriptor> curve;
+  gs::Curve_skeleton<Point, vertex_descriptor> curve, thinned;
   gs::Reeb_graph<Mesh> reeb;
   gs::Control_skeleton<Point> control;
   gs::Control_skeleton_report report;
@@ -212,7 +217,8 @@ int run(const Options& o)
                         params::straightness_tolerance(o.straightness_tolerance),
                         params::minimum_bone_length_factor(o.minimum_bone_length_factor),
                         params::number_of_reeb_intervals(o.reeb_intervals),
-                        params::curve_skeleton_output(&curve), params::reeb_graph_output(&reeb)));
+                        params::curve_skeleton_output(&curve), params::thinned_skeleton_output(&thinned),
+                        params::reeb_graph_output(&reeb)));
   }
   catch(const std::exception& e) // the stages' messages name the stage and the problem
   {
@@ -265,8 +271,22 @@ int run(const Options& o)
   if(!o.svg.empty())
   {
     std::ostringstream picture;
-    gs::IO::write_svg_preview(picture, mesh, control, 360,
-                              o.input + ": " + std::to_string(control.bones.size()) + " bones");
+    const std::string name = o.input.substr(o.input.find_last_of('/') + 1);
+    if(o.svg_stage == "control")
+      gs::IO::write_svg_preview(picture, mesh, control, 360,
+                                name + ": control skeleton, " + std::to_string(control.bones.size()) + " bones");
+    else if(o.svg_stage == "pruned")
+      gs::IO::write_svg_preview_of_graph(picture, mesh, curve, 360,
+                                         name + ": pruned, smoothed curve skeleton, " +
+                                             std::to_string(num_vertices(curve)) + " points");
+    else if(o.svg_stage == "thinned")
+      gs::IO::write_svg_preview_of_graph(picture, mesh, thinned, 360,
+                                         name + ": curve skeleton after thinning, " +
+                                             std::to_string(num_vertices(thinned)) + " points");
+    else
+      gs::IO::write_svg_preview_of_graph(picture, mesh, reeb, 360,
+                                         name + ": Reeb graph of the geodesic distance, " +
+                                             std::to_string(num_vertices(reeb)) + " nodes");
     write_file(o.svg, picture.str());
   }
   if(o.output.empty())

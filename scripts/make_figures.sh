@@ -7,8 +7,14 @@ cd "$(dirname "$0")/.."
 build=${1:-build}
 cmake --build "$build" --target skeletonize >/dev/null
 mkdir -p doc/figures
-for mesh in cow dino homer elephant; do
-  "$build/examples/skeletonize" "$build/data/meshes/$mesh.off" -o "/tmp/$mesh.json" \
-    --svg "doc/figures/$mesh.svg"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+meshes="$build/data/meshes"
+# The stages on the cow (the paper's figures 3, 4 and 6), then control skeletons (figure 7).
+for stage in thinned pruned reeb control; do
+  "$build/examples/skeletonize" "$meshes/cow.off" -o "$tmp/out.json" --svg "doc/figures/cow_$stage.svg" --svg-stage "$stage"
+done
+for mesh in dino homer elephant camel man; do
+  "$build/examples/skeletonize" "$meshes/$mesh.off" -o "$tmp/out.json" --svg "doc/figures/$mesh.svg"
 done
 echo "Figures written to doc/figures/"

@@ -9,7 +9,7 @@
 /// the paper compares its pruned skeleton with).
 
 #include <CGAL/Geodesic_skeleton/internal/indexed_vertices.h>
-#include <CGAL/Geodesic_skeleton/internal/vertex_components.h>
+#include <CGAL/Geodesic_skeleton/internal/reeb_pieces.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -74,15 +74,19 @@ inline std::size_t interval_of(double value, double low, double high, std::size_
 /// \ingroup PkgGeodesicSkeletonRef
 /// Builds the discrete Reeb graph of the scalar field `field` on the vertices of `mesh`.
 ///
-/// The range [min, max] of the field is cut into `number_of_intervals` equal intervals. A
-/// node stands for one connected component of the vertices whose value falls into one
-/// interval (connected through mesh edges whose two ends are in that interval); its point
-/// is the centroid of those vertices. Two nodes are linked when a mesh edge joins their
-/// vertices (nodes of adjacent intervals; when an edge spans more than one interval, as on
-/// a coarse mesh with many intervals, its two nodes are linked directly so that the graph
-/// keeps the mesh's connectivity). Each mesh connected component gives one connected
-/// component of the graph, and a handle of the mesh gives a cycle when the intervals are
-/// fine enough to separate its two sides.
+/// The range [min, max] of the field is cut into `number_of_intervals` equal intervals, and
+/// the field is taken as linear on each face (interpolated from its vertices). A node
+/// stands for one connected component of the part of the surface whose values fall into
+/// one interval: the part of a face between two level sets is connected, and two such
+/// pieces of one interval join across a shared edge whose values reach into the interval.
+/// Two nodes are linked when they touch along a level set (their pieces lie in one face,
+/// in consecutive intervals). A node holds the mesh vertices whose values fall in it; its
+/// point is their centroid (or the centroid of the faces it crosses, when a band of values
+/// is thinner than the faces and holds no vertex). Following the level sets through the
+/// faces keeps a thin band in one piece, so the graph has no false loops: a surface of
+/// genus g gives at most g independent cycles, and a handle gives one when the intervals
+/// are fine enough to separate its two sides. Each connected component of the mesh gives
+/// one of the graph; a vertex without faces gets a node of its own.
 ///
 /// \tparam FaceGraph a model of `FaceListGraph`.
 /// \tparam VertexScalarMap a readable vertex property map with a value convertible to `double`.
@@ -104,7 +108,8 @@ inline std::size_t interval_of(double value, double low, double high, std::size_
 ///         component, as `geodesic_mapping_function()` does), or `number_of_intervals`
 ///         out of range.
 ///
-/// \b Complexity: O((V + E) alpha(V) + E log E) time, O(V + E) memory.
+/// \b Complexity: O((F k + E k) alpha + V) time and O(F k + V) memory for F faces, E edges
+/// and V vertices, where k is the number of intervals a face spans (1 or 2 in practice).
 template <typename FaceGraph, typename VertexScalarMap, typename ReebGraph,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 void reeb_graph(const FaceGraph& mesh, VertexScalarMap field, std::size_t number_of_intervals,
@@ -145,46 +150,77 @@ void reeb_graph(const FaceGraph& mesh, VertexScalarMap field, std::size_t number
                                                   number_of_intervals);
   auto index = [&](vertex_descriptor v) { return static_cast<std::size_t>(get(vim, v)); };
 
-  // Nodes: components of the vertices of each interval.
-  const internal::Vertex_components parts = internal::vertex_components(mesh, vim, [&](auto e) {
-    return interval[index(source(e, mesh))] == interval[index(target(e, mesh))];
-  });
+  // Nodes and arcs from the pieces of the faces between level sets.
+  auto interval_of_vertex = [&](vertex_descriptor v) { return interval[index(v)]; };
+  const internal::Reeb_pieces pieces =
+      internal::reeb_pieces(mesh, CGAL::get_initialized_face_index_map(mesh, np), interval_of_vertex);
   reeb.clear();
   const double step = (high - low) / static_cast<double>(number_of_intervals);
-  std::vector<std::array<double, 3>> centroid_sum(parts.count, {0, 0, 0});
-  for(std::size_t k = 0; k < parts.count; ++k)
+  for(std::size_t k = 0; k < pieces.nodes; ++k)
     add_vertex(reeb);
+  for(const auto& arc : pieces.arcs)
+    add_edge(arc.first, arc.second, reeb);
+
+  // Each vertex goes to the node of its interval's piece in a face around it; a node's
+  // point is the centroid of its vertices, or of the faces it crosses when it has none.
+  const auto fim = CGAL::get_initialized_face_index_map(mesh, np);
+  std::vector<std::array<double, 4>> vertex_sum(pieces.nodes, {0, 0, 0, 0}), face_sum(pieces.nodes, {0, 0, 0, 0});
+  auto position = [&](vertex_descriptor v) {
+    const auto& p = get(vpm, v);
+    return std::array<double, 3>{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+  };
   for(vertex_descriptor v : vertices(mesh))
   {
-    const std::size_t node = parts.component_of[index(v)];
-    Node& n = reeb[node];
-    n.interval = interval[index(v)];
-    n.level_min = low + step * static_cast<double>(n.interval);
-    n.level_max = n.interval + 1 == number_of_intervals ? high : n.level_min + step;
-    n.vertices.push_back(v);
-    const auto& p = get(vpm, v);
-    centroid_sum[node][0] += CGAL::to_double(p.x());
-    centroid_sum[node][1] += CGAL::to_double(p.y());
-    centroid_sum[node][2] += CGAL::to_double(p.z());
+    // A face around v (a vertex without faces gets a node of its own).
+    auto h = halfedge(v, mesh);
+    if(h != boost::graph_traits<FaceGraph>::null_halfedge() && is_border(h, mesh))
+      h = opposite(h, mesh);
+    std::size_t node;
+    if(h == boost::graph_traits<FaceGraph>::null_halfedge() || is_border(h, mesh))
+    {
+      node = add_vertex(reeb);
+      vertex_sum.push_back({0, 0, 0, 0});
+      face_sum.push_back({0, 0, 0, 0});
+      reeb[node].interval = interval[index(v)];
+    }
+    else
+      node = pieces.node_of_piece[pieces.piece(static_cast<std::size_t>(get(fim, face(h, mesh))), interval[index(v)])];
+    reeb[node].vertices.push_back(v);
+    const auto p = position(v);
+    for(int c = 0; c < 3; ++c)
+      vertex_sum[node][c] += p[c];
+    vertex_sum[node][3] += 1;
   }
-  for(std::size_t node = 0; node < parts.count; ++node)
+  for(auto fd : faces(mesh))
   {
-    const double count = static_cast<double>(reeb[node].vertices.size());
-    reeb[node].point = Point(centroid_sum[node][0] / count, centroid_sum[node][1] / count,
-                             centroid_sum[node][2] / count);
+    const std::size_t f = static_cast<std::size_t>(get(fim, fd));
+    std::array<double, 3> centre{0, 0, 0};
+    double corners = 0;
+    std::size_t top = 0;
+    for(auto v : CGAL::vertices_around_face(halfedge(fd, mesh), mesh))
+    {
+      const auto p = position(v);
+      for(int c = 0; c < 3; ++c)
+        centre[c] += p[c];
+      corners += 1;
+      top = (std::max)(top, interval[index(v)]);
+    }
+    for(std::size_t k = pieces.first_interval[f]; k <= top; ++k)
+    {
+      const std::size_t node = pieces.node_of_piece[pieces.piece(f, k)];
+      for(int c = 0; c < 3; ++c)
+        face_sum[node][c] += centre[c] / corners;
+      face_sum[node][3] += 1;
+      reeb[node].interval = k;
+    }
   }
-
-  // Arcs: mesh edges between different nodes, each pair once.
-  std::set<std::pair<std::size_t, std::size_t>> arcs;
-  for(auto e : edges(mesh))
+  for(std::size_t node = 0; node < num_vertices(reeb); ++node)
   {
-    const std::size_t a = parts.component_of[index(source(e, mesh))];
-    const std::size_t b = parts.component_of[index(target(e, mesh))];
-    if(a != b)
-      arcs.insert(std::minmax(a, b));
+    const auto& sum = vertex_sum[node][3] > 0 ? vertex_sum[node] : face_sum[node];
+    reeb[node].point = Point(sum[0] / sum[3], sum[1] / sum[3], sum[2] / sum[3]);
+    reeb[node].level_min = low + step * static_cast<double>(reeb[node].interval);
+    reeb[node].level_max = reeb[node].interval + 1 == number_of_intervals ? high : reeb[node].level_min + step;
   }
-  for(const auto& arc : arcs)
-    add_edge(arc.first, arc.second, reeb);
 }
 
 } // namespace Geodesic_skeleton

@@ -57,6 +57,25 @@ inline std::string joint_colour(Joint_kind kind)
   return "#000000";
 }
 
+// What is drawn over the mesh: polylines (dashed or not) and dots.
+struct Svg_overlay
+{
+  struct Line { std::vector<Vec3> points; bool dashed = false; };
+  struct Dot { Vec3 point; double radius = 0; std::string colour; };
+  std::vector<Line> lines;
+  std::vector<Dot> dots;
+};
+
+template <typename Point>
+Vec3 to_vec3(const Point& p)
+{
+  return Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+}
+
+template <typename FaceGraph>
+std::ostream& write_svg_views(std::ostream& os, const FaceGraph& mesh, const Svg_overlay& overlay,
+                              int view_size, const std::string& title);
+
 } // namespace internal
 
 /// \ingroup PkgGeodesicSkeletonRef
@@ -64,9 +83,10 @@ inline std::string joint_colour(Joint_kind kind)
 /// views along the principal axes of the mesh (side: the two longest axes; top; front).
 ///
 /// The mesh is drawn as its front-facing triangles, shaded by the angle to the viewer
-/// (16 grey levels) and painted back to front; consecutive triangles of the same grey are
-/// merged into one path, and coordinates are rounded to a tenth of a pixel, so the file
-/// stays small (about 100 bytes per visible triangle and view). Bones are drawn as the
+/// (16 grey levels) and painted back to front by slabs of depth; the triangles of one grey
+/// in one slab make one path, corners are rounded to whole pixels and triangles smaller than a
+/// pixel are left out (a thin stroke of their neighbours covers them), so the file stays
+/// small (about 30 bytes per visible triangle and view). Bones are drawn as the
 /// polylines of their smoothed points, cut bones dashed; joints as dots whose radius is
 /// 0.3 times the joint's MAT radius (at least 2 pixels), coloured by kind: root red,
 /// junction orange, bend blue, end green. "Up" on the picture is opposite to the second
@@ -88,7 +108,58 @@ std::ostream& write_svg_preview(std::ostream& os, const FaceGraph& mesh,
                                 const Control_skeleton<Point>& skeleton, int view_size = 360,
                                 const std::string& title = std::string())
 {
-  using internal::Vec3;
+  internal::Svg_overlay overlay;
+  for(const auto* bones : {&skeleton.bones, &skeleton.cut_bones})
+    for(const Control_bone<Point>& bone : *bones)
+    {
+      internal::Svg_overlay::Line line;
+      line.dashed = bones == &skeleton.cut_bones;
+      for(const Point& p : bone.points)
+        line.points.push_back(internal::to_vec3(p));
+      overlay.lines.push_back(std::move(line));
+    }
+  for(const Control_joint<Point>& joint : skeleton.joints)
+    overlay.dots.push_back({internal::to_vec3(joint.point), joint.radius, internal::joint_colour(joint.kind)});
+  return internal::write_svg_views(os, mesh, overlay, view_size, title);
+}
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// Writes an SVG picture of `mesh` with a skeleton graph drawn over it, in the views of
+/// `write_svg_preview()`: every edge as a line, the end points (degree 1) as green dots
+/// and the junctions (degree 3 or more) as orange dots, 2.5 pixels wide. For the figures
+/// of the intermediate stages: the thinned or pruned curve skeleton (`Curve_skeleton`),
+/// the Reeb graph (`Reeb_graph`).
+///
+/// \tparam Graph an undirected `boost::adjacency_list` with `vecS` vertex storage whose
+///         vertex bundle has a `point` in the mesh's coordinates.
+/// \returns `os`. \throws as `write_svg_preview()`.
+/// \b Complexity: O(F log F + V + E) for F faces, V graph vertices and E edges.
+template <typename FaceGraph, typename Graph>
+std::ostream& write_svg_preview_of_graph(std::ostream& os, const FaceGraph& mesh, const Graph& graph,
+                                         int view_size = 360, const std::string& title = std::string())
+{
+  internal::Svg_overlay overlay;
+  for(auto e : boost::make_iterator_range(edges(graph)))
+    overlay.lines.push_back({{internal::to_vec3(graph[source(e, graph)].point),
+                              internal::to_vec3(graph[target(e, graph)].point)},
+                             false});
+  for(std::size_t v = 0; v < num_vertices(graph); ++v)
+  {
+    const std::size_t d = boost::degree(v, graph);
+    if(d != 2)
+      overlay.dots.push_back({internal::to_vec3(graph[v].point), -2.5, d >= 3 ? "#ff7f0e" : "#2ca02c"});
+  }
+  return internal::write_svg_views(os, mesh, overlay, view_size, title);
+}
+
+namespace internal {
+
+// Draws the mesh and the overlay in three views. A dot of negative radius has that many
+// pixels; a positive radius is in world units (drawn at 0.3 of it, at least 2 pixels).
+template <typename FaceGraph>
+std::ostream& write_svg_views(std::ostream& os, const FaceGraph& mesh, const Svg_overlay& overlay,
+                              int view_size, const std::string& title)
+{
   if(view_size < 32 || view_size > 4096)
     throw std::invalid_argument("write_svg_preview: the view size must be in [32, 4096] pixels");
   const auto triangles = Geodesic_skeleton::internal::mesh_triangles(
@@ -166,48 +237,69 @@ std::ostream& write_svg_preview(std::ostream& os, const FaceGraph& mesh,
                            internal::dot(t[2], toward_viewer);
       drawn.push_back({depth, static_cast<int>(std::min(15.0, facing * 16)), i});
     }
-    std::sort(drawn.begin(), drawn.end(), [](const Drawn& a, const Drawn& b) { return a.depth < b.depth; });
-    os << "<g stroke-linejoin=\"round\">\n";
+    // Back to front by slabs of depth (a 48th of the depth range each), and by grey within
+    // a slab, so that a slab's triangles of one grey make one path: front-facing triangles
+    // of one slab seldom overlap.
+    double nearest = -1e300, farthest = 1e300;
+    for(const Drawn& d : drawn)
+    {
+      nearest = std::max(nearest, d.depth);
+      farthest = std::min(farthest, d.depth);
+    }
+    const double slab = (nearest - farthest) / 48 + 1e-300;
+    auto slab_of = [&](const Drawn& d) { return static_cast<int>((d.depth - farthest) / slab); };
+    std::sort(drawn.begin(), drawn.end(), [&](const Drawn& a, const Drawn& b) {
+      const int sa = slab_of(a), sb = slab_of(b);
+      return sa != sb ? sa < sb : a.grey != b.grey ? a.grey < b.grey : a.depth < b.depth;
+    });
+    os << "<g stroke-linejoin=\"round\" stroke-width=\"0.6\">\n";
     for(std::size_t k = 0; k < drawn.size();)
     {
       const int grey = drawn[k].grey;
       const int level = 120 + 8 * grey;
-      os << "<path fill=\"rgb(" << level << ',' << level << ',' << level + 6 << ")\" d=\"";
+      os << "<path fill=\"rgb(" << level << ',' << level << ',' << level + 6 << ")\" stroke=\"rgb(" << level << ','
+         << level << ',' << level + 6 << ")\" d=\"";
       for(; k < drawn.size() && drawn[k].grey == grey; ++k)
       {
+        // Whole pixels; a triangle that rounds to less than a pixel is left out (its
+        // neighbours, drawn with round joins, cover it).
         const auto& t = triangles[drawn[k].index];
+        long px[3][2];
         for(int c = 0; c < 3; ++c)
         {
           const auto s = screen(t[c]);
-          os << (c == 0 ? 'M' : 'L') << round1(s[0]) << ' ' << round1(s[1]);
+          px[c][0] = std::lround(s[0]);
+          px[c][1] = std::lround(s[1]);
         }
-        os << 'Z';
+        const long twice_area = (px[1][0] - px[0][0]) * (px[2][1] - px[0][1]) -
+                                (px[2][0] - px[0][0]) * (px[1][1] - px[0][1]);
+        if(twice_area == 0)
+          continue;
+        os << 'M' << px[0][0] << ' ' << px[0][1] << 'L' << px[1][0] << ' ' << px[1][1] << 'L' << px[2][0]
+           << ' ' << px[2][1] << 'Z';
       }
       os << "\"/>\n";
     }
     os << "</g>\n";
 
     // The skeleton on top.
-    auto bone_path = [&](const Control_bone<Point>& bone, const char* style) {
-      os << "<polyline fill=\"none\" stroke=\"#111\" stroke-width=\"2\"" << style << " points=\"";
-      for(const Point& p : bone.points)
+    for(const Svg_overlay::Line& line : overlay.lines)
+    {
+      os << "<polyline fill=\"none\" stroke=\"#111\" stroke-width=\"2\""
+         << (line.dashed ? " stroke-dasharray=\"4 3\"" : "") << " points=\"";
+      for(const Vec3& p : line.points)
       {
-        const auto s = screen(Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
+        const auto s = screen(p);
         os << round1(s[0]) << ',' << round1(s[1]) << ' ';
       }
       os << "\"/>\n";
-    };
-    for(const auto& bone : skeleton.bones)
-      bone_path(bone, "");
-    for(const auto& bone : skeleton.cut_bones)
-      bone_path(bone, " stroke-dasharray=\"4 3\"");
-    for(const auto& joint : skeleton.joints)
+    }
+    for(const Svg_overlay::Dot& dot : overlay.dots)
     {
-      const auto s = screen(Vec3{CGAL::to_double(joint.point.x()), CGAL::to_double(joint.point.y()),
-                                 CGAL::to_double(joint.point.z())});
-      os << "<circle cx=\"" << round1(s[0]) << "\" cy=\"" << round1(s[1]) << "\" r=\""
-         << round1(std::max(2.0, 0.3 * scale * joint.radius)) << "\" fill=\"" << internal::joint_colour(joint.kind)
-         << "\" fill-opacity=\"0.45\" stroke=\"#111\" stroke-width=\"0.5\"/>\n";
+      const auto s = screen(dot.point);
+      const double r = dot.radius < 0 ? -dot.radius : std::max(2.0, 0.3 * scale * dot.radius);
+      os << "<circle cx=\"" << round1(s[0]) << "\" cy=\"" << round1(s[1]) << "\" r=\"" << round1(r)
+         << "\" fill=\"" << dot.colour << "\" fill-opacity=\"0.45\" stroke=\"#111\" stroke-width=\"0.5\"/>\n";
     }
     os << "<text x=\"" << static_cast<double>(v) * view_size + 6 << "\" y=\"" << header + view_size - 6
        << "\" font-family=\"sans-serif\" font-size=\"12\" fill=\"#444\">" << view.name << "</text>\n";
@@ -215,6 +307,8 @@ std::ostream& write_svg_preview(std::ostream& os, const FaceGraph& mesh,
   os << "</svg>\n";
   return os;
 }
+
+} // namespace internal
 
 } // namespace IO
 } // namespace Geodesic_skeleton
