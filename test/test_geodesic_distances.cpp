@@ -40,20 +40,6 @@ std::vector<double> distances_from(const Graph& g, const Sources& sources)
   return d;
 }
 
-Mesh mesh_of(const test::Soup& soup)
-{
-  Mesh m;
-  test::soup_to_mesh(soup, m);
-  return m;
-}
-
-Mesh demo_mesh(const char* name)
-{
-  Mesh m;
-  test::read_demo_mesh(name, m);
-  return m;
-}
-
 struct Relative_errors
 {
   double mean = 0, max = 0, min = std::numeric_limits<double>::infinity();
@@ -94,7 +80,7 @@ BOOST_AUTO_TEST_SUITE(geodesic_distances)
 BOOST_AUTO_TEST_CASE(sphere_distances_are_close_to_great_circle_arcs)
 {
   const double radius = 2.0;
-  const Mesh sphere = mesh_of(test::icosphere(radius, 5)); // 10242 vertices
+  const Mesh sphere = test::mesh_of<Mesh>(test::icosphere(radius, 5)); // 10242 vertices
   const vertex_descriptor source = *vertices(sphere).begin();
   const std::vector<double> d = distances_from(sphere, source);
 
@@ -118,7 +104,7 @@ BOOST_AUTO_TEST_CASE(open_cylinder_distances_are_close_to_unrolled_distances)
 {
   const double radius = 1.0, height = 6.0;
   const int around = 96, along = 106; // ring spacing sqrt(3)/2 of 2 pi r / around: equilateral
-  const Mesh tube = mesh_of(test::cylinder(radius, height, around, along, false));
+  const Mesh tube = test::mesh_of<Mesh>(test::cylinder(radius, height, around, along, false));
   const vertex_descriptor source = *vertices(tube).begin(); // angle 0, z 0
   const std::vector<double> d = distances_from(tube, source);
 
@@ -138,7 +124,7 @@ BOOST_AUTO_TEST_CASE(open_cylinder_distances_are_close_to_unrolled_distances)
 
 BOOST_AUTO_TEST_CASE(distance_is_symmetric)
 {
-  const Mesh cow = demo_mesh("cow.off");
+  const Mesh cow = test::demo_mesh<Mesh>("cow.off");
   CGAL::Random rng(7);
   for(int k = 0; k < 10; ++k)
   {
@@ -152,7 +138,7 @@ BOOST_AUTO_TEST_CASE(distance_is_symmetric)
 
 BOOST_AUTO_TEST_CASE(distance_satisfies_the_triangle_inequality)
 {
-  const Mesh cow = demo_mesh("cow.off");
+  const Mesh cow = test::demo_mesh<Mesh>("cow.off");
   CGAL::Random rng(11);
   for(int k = 0; k < 10; ++k)
   {
@@ -170,7 +156,7 @@ BOOST_AUTO_TEST_CASE(distance_satisfies_the_triangle_inequality)
 
 BOOST_AUTO_TEST_CASE(distances_are_invariant_under_a_rigid_motion)
 {
-  const Mesh cow = demo_mesh("cow.off");
+  const Mesh cow = test::demo_mesh<Mesh>("cow.off");
   Mesh moved = cow;
   CGAL::Random rng(3);
   // A random rotation (from a random unit quaternion) followed by a translation.
@@ -199,7 +185,7 @@ BOOST_AUTO_TEST_CASE(distances_are_invariant_under_a_rigid_motion)
 
 BOOST_AUTO_TEST_CASE(multi_source_distance_is_the_minimum_of_single_source_distances)
 {
-  const Mesh cow = demo_mesh("cow.off");
+  const Mesh cow = test::demo_mesh<Mesh>("cow.off");
   const std::vector<vertex_descriptor> sources = {vertex_descriptor(5), vertex_descriptor(900),
                                                   vertex_descriptor(2500)};
   const std::vector<double> multi = distances_from(cow, sources);
@@ -219,7 +205,7 @@ BOOST_AUTO_TEST_CASE(a_vertex_in_another_component_is_at_infinity)
   test::Soup two = test::icosphere(1, 2);
   const std::size_t first_size = two.points.size();
   test::append(two, test::icosphere(1, 2), 5, 0, 0);
-  const Mesh spheres = mesh_of(two);
+  const Mesh spheres = test::mesh_of<Mesh>(two);
   const std::vector<double> d = distances_from(spheres, vertex_descriptor(0));
   for(std::size_t i = 0; i < d.size(); ++i)
   {
@@ -236,7 +222,7 @@ BOOST_AUTO_TEST_CASE(a_vertex_in_another_component_is_at_infinity)
 
 BOOST_AUTO_TEST_CASE(surface_mesh_and_polyhedron_give_the_same_distances)
 {
-  const Mesh cow = demo_mesh("cow.off");
+  const Mesh cow = test::demo_mesh<Mesh>("cow.off");
   Polyhedron cow_polyhedron;
   test::read_demo_mesh("cow.off", cow_polyhedron);
   BOOST_REQUIRE_EQUAL(num_vertices(cow_polyhedron), num_vertices(cow));
@@ -256,7 +242,7 @@ BOOST_AUTO_TEST_CASE(surface_mesh_and_polyhedron_give_the_same_distances)
 
 BOOST_AUTO_TEST_CASE(predecessors_trace_paths_as_long_as_the_distances)
 {
-  const Mesh cow = demo_mesh("cow.off");
+  const Mesh cow = test::demo_mesh<Mesh>("cow.off");
   std::vector<double> d(num_vertices(cow));
   std::vector<vertex_descriptor> predecessor(num_vertices(cow));
   const vertex_descriptor source(100);
@@ -276,7 +262,7 @@ BOOST_AUTO_TEST_CASE(predecessors_trace_paths_as_long_as_the_distances)
 
 BOOST_AUTO_TEST_CASE(shortest_path_is_an_edge_path_of_the_geodesic_length)
 {
-  const Mesh cow = demo_mesh("cow.off");
+  const Mesh cow = test::demo_mesh<Mesh>("cow.off");
   const vertex_descriptor source(10), target(2000);
   std::vector<vertex_descriptor> path;
   const double length = gs::shortest_path(cow, source, target, std::back_inserter(path));
@@ -298,7 +284,7 @@ BOOST_AUTO_TEST_CASE(shortest_path_to_another_component_is_empty_and_infinite)
   test::Soup two = test::icosphere(1, 1);
   const std::size_t first_size = two.points.size();
   test::append(two, test::icosphere(1, 1), 5, 0, 0);
-  const Mesh spheres = mesh_of(two);
+  const Mesh spheres = test::mesh_of<Mesh>(two);
   std::vector<vertex_descriptor> path;
   const double length = gs::shortest_path(spheres, vertex_descriptor(0),
                                           vertex_descriptor(first_size + 3), std::back_inserter(path));
@@ -308,7 +294,7 @@ BOOST_AUTO_TEST_CASE(shortest_path_to_another_component_is_empty_and_infinite)
 
 BOOST_AUTO_TEST_CASE(farthest_vertex_has_the_largest_distance)
 {
-  const Mesh cow = demo_mesh("cow.off");
+  const Mesh cow = test::demo_mesh<Mesh>("cow.off");
   const std::vector<vertex_descriptor> sources = {vertex_descriptor(1), vertex_descriptor(1500)};
   const std::vector<double> d = distances_from(cow, sources);
   const auto farthest = gs::farthest_vertex(cow, sources);
@@ -318,7 +304,7 @@ BOOST_AUTO_TEST_CASE(farthest_vertex_has_the_largest_distance)
 
 BOOST_AUTO_TEST_CASE(a_custom_edge_weight_map_is_used)
 {
-  const Mesh box = mesh_of(test::box(0, 0, 0, 1, 1, 1));
+  const Mesh box = test::mesh_of<Mesh>(test::box(0, 0, 0, 1, 1, 1));
   // Every edge weighs 1: distances become hop counts.
   const auto unit = CGAL::Constant_property_map<boost::graph_traits<Mesh>::edge_descriptor, double>(1.0);
   std::vector<double> d(num_vertices(box));
@@ -346,7 +332,7 @@ BOOST_AUTO_TEST_CASE(bad_input_gives_clear_exceptions)
   BOOST_CHECK_THROW(distances_throw(empty, vertex_descriptor(0), no_parameters), std::invalid_argument);
 
   // A source that is not in the mesh, or no source at all.
-  const Mesh box = mesh_of(test::box(0, 0, 0, 1, 1, 1));
+  const Mesh box = test::mesh_of<Mesh>(test::box(0, 0, 0, 1, 1, 1));
   BOOST_CHECK_THROW(distances_throw(box, vertex_descriptor(8), no_parameters), std::invalid_argument);
   BOOST_CHECK_THROW(distances_throw(box, Mesh::null_vertex(), no_parameters), std::invalid_argument);
   BOOST_CHECK_THROW(distances_throw(box, std::vector<vertex_descriptor>(), no_parameters), std::invalid_argument);
@@ -372,7 +358,7 @@ BOOST_AUTO_TEST_CASE(a_surface_mesh_with_removed_vertices_still_works)
 {
   // Surface_mesh keeps removed elements until collect_garbage(); BGL's num_vertices counts
   // them, so indices stay in range and every live vertex gets its distance.
-  Mesh with_garbage = mesh_of(test::icosphere(1, 2));
+  Mesh with_garbage = test::mesh_of<Mesh>(test::icosphere(1, 2));
   CGAL::Euler::remove_center_vertex(halfedge(vertex_descriptor(0), with_garbage), with_garbage);
   BOOST_REQUIRE(with_garbage.has_garbage());
   const std::vector<double> d = distances_from(with_garbage, vertex_descriptor(1));

@@ -32,13 +32,6 @@ using Reeb = gs::Reeb_graph<Mesh>;
 
 namespace {
 
-Mesh mesh_of(const test::Soup& soup)
-{
-  Mesh m;
-  test::soup_to_mesh(soup, m);
-  return m;
-}
-
 struct Graph_shape
 {
   std::size_t nodes = 0, arcs = 0, components = 0, ends = 0, max_degree = 0;
@@ -110,7 +103,7 @@ BOOST_AUTO_TEST_SUITE(reeb_graph)
 BOOST_AUTO_TEST_CASE(a_torus_with_a_height_function_gives_one_cycle)
 {
   // The torus stands on its rim: the height x cuts it into two arcs between its ends.
-  const Mesh torus = mesh_of(test::torus(3, 1, 64, 24));
+  const Mesh torus = test::mesh_of<Mesh>(test::torus(3, 1, 64, 24));
   const Graph_shape s = shape_of(reeb_of_coordinate_field(torus, [](const Point& p) { return p.x(); }, 16));
   BOOST_TEST(s.components == 1u);
   BOOST_TEST(s.cycles() == 1u);
@@ -118,7 +111,7 @@ BOOST_AUTO_TEST_CASE(a_torus_with_a_height_function_gives_one_cycle)
 
 BOOST_AUTO_TEST_CASE(a_capsule_gives_a_path)
 {
-  const Mesh capsule = mesh_of(test::cylinder(1, 8, 32, 60, true));
+  const Mesh capsule = test::mesh_of<Mesh>(test::cylinder(1, 8, 32, 60, true));
   const Reeb reeb = reeb_of_coordinate_field(capsule, [](const Point& p) { return p.z(); }, 12);
   const Graph_shape s = shape_of(reeb);
   BOOST_TEST(s.nodes == 12u);
@@ -141,7 +134,7 @@ BOOST_AUTO_TEST_CASE(a_two_component_mesh_gives_two_components)
 {
   test::Soup two = test::icosphere(1, 3);
   test::append(two, test::icosphere(0.5, 3), 4, 0, 0);
-  const Mesh spheres = mesh_of(two);
+  const Mesh spheres = test::mesh_of<Mesh>(two);
   std::vector<double> field = geodesic_field(spheres);
   for(double value : field)
     BOOST_TEST(std::isfinite(value));
@@ -200,7 +193,7 @@ BOOST_AUTO_TEST_CASE(a_reeb_graph_has_as_many_cycles_as_the_surface_has_handles)
 BOOST_AUTO_TEST_CASE(the_geodesic_field_starts_at_an_extremity)
 {
   // On a capsule the farthest-point search finds a cap: the field runs along the axis.
-  const Mesh capsule = mesh_of(test::cylinder(1, 8, 32, 60, true));
+  const Mesh capsule = test::mesh_of<Mesh>(test::cylinder(1, 8, 32, 60, true));
   const std::vector<double> field = geodesic_field(capsule);
   const auto lowest = std::min_element(field.begin(), field.end()) - field.begin();
   BOOST_TEST(*std::min_element(field.begin(), field.end()) == 0.0);
@@ -213,7 +206,7 @@ BOOST_AUTO_TEST_CASE(given_sources_must_reach_every_component)
 {
   test::Soup two = test::icosphere(1, 1);
   test::append(two, test::icosphere(1, 1), 4, 0, 0);
-  const Mesh spheres = mesh_of(two);
+  const Mesh spheres = test::mesh_of<Mesh>(two);
   std::vector<double> field(num_vertices(spheres));
   const std::vector<vertex_descriptor> one_source = {vertex_descriptor(0)};
   BOOST_CHECK_THROW(gs::geodesic_mapping_function(
@@ -224,7 +217,7 @@ BOOST_AUTO_TEST_CASE(given_sources_must_reach_every_component)
 
 BOOST_AUTO_TEST_CASE(the_integral_field_is_low_in_the_middle_and_high_at_the_tips)
 {
-  const Mesh capsule = mesh_of(test::cylinder(1, 8, 32, 60, true));
+  const Mesh capsule = test::mesh_of<Mesh>(test::cylinder(1, 8, 32, 60, true));
   std::vector<double> field(num_vertices(capsule));
   gs::integral_geodesic_mapping_function(
       capsule, boost::make_iterator_property_map(field.begin(), get(CGAL::vertex_index, capsule)),
@@ -285,7 +278,7 @@ BOOST_AUTO_TEST_CASE(bad_input_gives_clear_exceptions)
                                    10, reeb),
                     std::invalid_argument);
 
-  const Mesh box = mesh_of(test::box(0, 0, 0, 1, 1, 1));
+  const Mesh box = test::mesh_of<Mesh>(test::box(0, 0, 0, 1, 1, 1));
   std::vector<double> field(num_vertices(box), 1.0);
   auto field_map = boost::make_iterator_property_map(field.begin(), get(CGAL::vertex_index, box));
   BOOST_CHECK_THROW(gs::reeb_graph(box, field_map, 0, reeb), std::invalid_argument);

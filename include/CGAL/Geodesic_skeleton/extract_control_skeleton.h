@@ -14,6 +14,7 @@
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/geodesic_mapping_function.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
+#include <CGAL/Geodesic_skeleton/internal/joints_inside.h>
 #include <CGAL/Geodesic_skeleton/internal/recentre_thin_parts.h>
 #include <CGAL/Geodesic_skeleton/prune_skeleton.h>
 #include <CGAL/Geodesic_skeleton/reeb_graph.h>
@@ -48,12 +49,13 @@ struct Control_skeleton_report
   Skeleton_statistics thinned;     ///< the curve skeleton after thinning
   Skeleton_statistics pruned;      ///< after pruning (Algorithm 1 and snipping)
   Pruning_report pruning;          ///< what pruning removed
+  std::size_t joints_moved_inside = 0; ///< joints that lay outside the (closed) mesh and were moved in
   std::size_t reeb_nodes = 0;      ///< nodes of the Reeb graph, when one was asked for
   std::size_t reeb_edges = 0;      ///< arcs of the Reeb graph, when one was asked for
   /// Wall-clock time of each stage in milliseconds, in the order they ran: "voxelize",
   /// "distance_transform", "thin", "thinned_graph" (the graph and counts of the thinned
-  /// skeleton), "prune", "to_graph", "smooth", "split_into_bones", and "reeb_graph" when
-  /// asked for.
+  /// skeleton), "prune", "to_graph", "smooth", "split_into_bones", "joints_inside", and
+  /// "reeb_graph" when asked for.
   std::vector<std::pair<std::string, double>> timings_ms;
   double total_ms = 0;             ///< the whole call, in milliseconds
 };
@@ -158,6 +160,12 @@ private:
 ///   - `number_of_reeb_intervals` (package parameter): intervals of that Reeb graph
 ///     (default: 30).
 ///
+/// Last, when the mesh is a closed triangle mesh, a joint that lies outside it (in a limb
+/// thinner than a couple of voxels, the skeleton can pass up to about half a voxel out)
+/// moves to the nearest point of the surface and a quarter voxel further in, so that every
+/// joint is inside the mesh; the bones' ends follow. An open mesh has no inside to test,
+/// and its joints stay where the skeleton puts them.
+///
 /// \returns the sizes and timings of the stages.
 /// \throws std::invalid_argument for bad input or parameters, with a message naming the
 ///         stage and the problem (see each stage): an empty mesh, non-finite coordinates,
@@ -225,6 +233,12 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
 
   split_into_bones(curve, out, np);
   clock.finished("split_into_bones");
+  report.joints_moved_inside = internal::move_joints_inside(
+      mesh,
+      choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                       get_const_property_map(CGAL::vertex_point, mesh)),
+      out, 0.25 * report.voxel_size, 2 * report.voxel_size);
+  clock.finished("joints_inside");
   if constexpr(!is_default_parameter<NamedParameters, internal_np::curve_skeleton_output_t>::value)
     *get_parameter(np, internal_np::curve_skeleton_output_tag) = std::move(curve);
 

@@ -204,6 +204,24 @@ void read_demo_mesh(const std::string& name, Mesh& mesh)
                              " (run scripts/unpack_demo_meshes.sh)");
 }
 
+// The mesh of a soup, by value.
+template <typename Mesh>
+Mesh mesh_of(const Soup& soup)
+{
+  Mesh mesh;
+  soup_to_mesh(soup, mesh);
+  return mesh;
+}
+
+// A demo mesh, by value.
+template <typename Mesh>
+Mesh demo_mesh(const std::string& name)
+{
+  Mesh mesh;
+  read_demo_mesh(name, mesh);
+  return mesh;
+}
+
 } // namespace Geodesic_skeleton_test
 
 #endif // GEODESIC_SKELETON_TEST_SHAPES_H

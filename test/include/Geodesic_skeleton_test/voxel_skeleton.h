@@ -30,24 +30,6 @@ namespace Geodesic_skeleton_test {
 
 namespace gs = CGAL::Geodesic_skeleton;
 
-// A mesh of type Mesh built from a soup.
-template <typename Mesh>
-Mesh mesh_of(const Soup& soup)
-{
-  Mesh m;
-  soup_to_mesh(soup, m);
-  return m;
-}
-
-// A demo mesh of type Mesh.
-template <typename Mesh>
-Mesh demo_mesh(const std::string& name)
-{
-  Mesh m;
-  read_demo_mesh(name, m);
-  return m;
-}
-
 // The keys of a voxel set, ordered.
 template <typename VoxelSet>
 std::set<gs::Voxel_key> keys_of(const VoxelSet& s)

@@ -1,0 +1,193 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_GEODESIC_SKELETON_INTERNAL_JOINTS_INSIDE_H
+#define CGAL_GEODESIC_SKELETON_INTERNAL_JOINTS_INSIDE_H
+
+#include <CGAL/Geodesic_skeleton/Control_skeleton.h>
+#include <CGAL/Geodesic_skeleton/internal/principal_frame.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Geodesic_skeleton {
+namespace internal {
+
+// Ray parity against a closed triangle soup: odd crossings along a ray means inside. Rays
+// go along the axes first, so that a triangle whose box misses the ray's line is skipped
+// with four comparisons. A ray that passes too near an edge or a vertex of a triangle
+// (where a crossing could be counted twice or missed) is dropped and another direction
+// tried. Costs O(F) per query: meant for the few points in doubt, where building a search
+// tree would cost more.
+inline bool is_inside_closed_soup(const Vec3& p, const std::vector<Triangle3>& triangles)
+{
+  static const Vec3 directions[5] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1},
+                                     {0.5773502692, 0.5773502692, 0.5773502692},
+                                     {0.2672612419, -0.5345224838, 0.8017837257}};
+  for(int axis = 0; axis < 5; ++axis)
+  {
+    const Vec3& d = directions[axis];
+    bool ambiguous = false;
+    std::size_t crossings = 0;
+    for(const Triangle3& t : triangles)
+    {
+      if(axis < 3) // the ray runs along this axis: the other two coordinates must be covered
+      {
+        const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+        if(p[a] < (std::min)({t[0][a], t[1][a], t[2][a]}) || p[a] > (std::max)({t[0][a], t[1][a], t[2][a]}) ||
+           p[b] < (std::min)({t[0][b], t[1][b], t[2][b]}) || p[b] > (std::max)({t[0][b], t[1][b], t[2][b]}) ||
+           p[axis] > (std::max)({t[0][axis], t[1][axis], t[2][axis]}))
+          continue;
+      }
+      // Moeller-Trumbore: p + s d = t0 + u (t1 - t0) + v (t2 - t0).
+      const Vec3 e1 = sub(t[1], t[0]), e2 = sub(t[2], t[0]);
+      const Vec3 h = cross3(d, e2);
+      const double det = dot3(e1, h);
+      const double scale = std::sqrt(dot3(e1, e1) * dot3(e2, e2));
+      if(std::abs(det) <= 1e-12 * scale)
+        continue; // the ray runs along the triangle's plane: no single crossing
+      const Vec3 w = sub(p, t[0]);
+      const double u = dot3(w, h) / det;
+      const Vec3 q = cross3(w, e1);
+      const double v = dot3(d, q) / det;
+      const double s = dot3(e2, q) / det;
+      const double margin = 1e-9;
+      if(u < -margin || v < -margin || u + v > 1 + margin || s < 0)
+        continue;
+      if(u < margin || v < margin || u + v > 1 - margin || s < margin)
+      {
+        ambiguous = true;
+        break;
+      }
+      ++crossings;
+    }
+    if(!ambiguous)
+      return crossings % 2 == 1;
+  }
+  return false;
+}
+
+// The point of triangle t nearest p (by the regions of the triangle's Voronoi diagram).
+inline Vec3 closest_point_on_triangle(const Vec3& p, const Triangle3& t)
+{
+  const Vec3 ab = sub(t[1], t[0]), ac = sub(t[2], t[0]), ap = sub(p, t[0]);
+  const double d1 = dot3(ab, ap), d2 = dot3(ac, ap);
+  if(d1 <= 0 && d2 <= 0)
+    return t[0];
+  const Vec3 bp = sub(p, t[1]);
+  const double d3 = dot3(ab, bp), d4 = dot3(ac, bp);
+  if(d3 >= 0 && d4 <= d3)
+    return t[1];
+  auto along = [](const Vec3& a, const Vec3& e, double f) {
+    return Vec3{a[0] + f * e[0], a[1] + f * e[1], a[2] + f * e[2]};
+  };
+  const double vc = d1 * d4 - d3 * d2;
+  if(vc <= 0 && d1 >= 0 && d3 <= 0)
+    return along(t[0], ab, d1 / (d1 - d3));
+  const Vec3 cp = sub(p, t[2]);
+  const double d5 = dot3(ab, cp), d6 = dot3(ac, cp);
+  if(d6 >= 0 && d5 <= d6)
+    return t[2];
+  const double vb = d5 * d2 - d1 * d6;
+  if(vb <= 0 && d2 >= 0 && d6 <= 0)
+    return along(t[0], ac, d2 / (d2 - d6));
+  const double va = d3 * d6 - d5 * d4;
+  if(va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+    return along(t[1], sub(t[2], t[1]), (d4 - d3) / ((d4 - d3) + (d5 - d6)));
+  const double denominator = 1 / (va + vb + vc);
+  const double v = vb * denominator, w = vc * denominator;
+  return Vec3{t[0][0] + ab[0] * v + ac[0] * w, t[0][1] + ab[1] * v + ac[1] * w, t[0][2] + ab[2] * v + ac[2] * w};
+}
+
+// Moves every joint that lies outside a closed triangle mesh (a limb thinner than a couple
+// of voxels can put one up to about half a voxel out) just inside it: to the nearest point
+// of the surface, then `depth` further in (halving the step while it would leave the mesh
+// on the other side). Only joints of medial radius under `deep_radius` are in doubt: a
+// deeper one sits inside. The bones' end points follow their joints. Returns how many
+// joints moved; a mesh that is not a closed triangle mesh has no inside to test and is
+// left alone.
+//
+// Complexity: O(D F) for D doubtful joints and F faces (D is a handful: limb tips).
+template <typename TriangleMesh, typename VertexPointMap, typename Point>
+std::size_t move_joints_inside(const TriangleMesh& mesh, VertexPointMap vpm, Control_skeleton<Point>& control,
+                               double depth, double deep_radius)
+{
+  std::vector<std::size_t> doubtful;
+  for(std::size_t j = 0; j < control.joints.size(); ++j)
+    if(control.joints[j].radius < deep_radius)
+      doubtful.push_back(j);
+  if(doubtful.empty() || !CGAL::is_closed(mesh) || !CGAL::is_triangle_mesh(mesh))
+    return 0;
+
+  std::vector<Triangle3> triangles;
+  triangles.reserve(static_cast<std::size_t>(num_faces(mesh)));
+  for(auto f : faces(mesh))
+  {
+    Triangle3 t;
+    int c = 0;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+    {
+      const auto& p = get(vpm, v);
+      t[c++] = Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+    }
+    triangles.push_back(t);
+  }
+
+  std::size_t moved = 0;
+  for(std::size_t j : doubtful)
+  {
+    Point& joint = control.joints[j].point;
+    const Vec3 p{CGAL::to_double(joint.x()), CGAL::to_double(joint.y()), CGAL::to_double(joint.z())};
+    if(is_inside_closed_soup(p, triangles))
+      continue;
+    Vec3 nearest = p;
+    double best = std::numeric_limits<double>::infinity();
+    for(const Triangle3& t : triangles)
+    {
+      const Vec3 q = closest_point_on_triangle(p, t);
+      const double d = dot3(sub(q, p), sub(q, p));
+      if(d < best)
+      {
+        best = d;
+        nearest = q;
+      }
+    }
+    const Vec3 in = sub(nearest, p);
+    const double length = std::sqrt(dot3(in, in));
+    if(!(length > 0))
+      continue;
+    for(double step = depth; step > 1e-6 * depth; step /= 2)
+    {
+      const Vec3 candidate{nearest[0] + step * in[0] / length, nearest[1] + step * in[1] / length,
+                           nearest[2] + step * in[2] / length};
+      if(is_inside_closed_soup(candidate, triangles))
+      {
+        joint = Point(candidate[0], candidate[1], candidate[2]);
+        ++moved;
+        break;
+      }
+    }
+  }
+  if(moved > 0)
+    for(auto* bones : {&control.bones, &control.cut_bones})
+      for(Control_bone<Point>& bone : *bones)
+      {
+        bone.points.front() = control.joints[bone.parent].point;
+        bone.points.back() = control.joints[bone.child].point;
+      }
+  return moved;
+}
+
+} // namespace internal
+} // namespace Geodesic_skeleton
+} // namespace CGAL
+
+#endif // CGAL_GEODESIC_SKELETON_INTERNAL_JOINTS_INSIDE_H
