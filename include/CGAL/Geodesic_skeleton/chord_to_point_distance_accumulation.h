@@ -8,6 +8,7 @@
 /// Han and Poston's chord-to-point distance accumulation (paper, equation 4), carried to
 /// 3D polylines with chords of a fixed arc length.
 
+#include <CGAL/Geodesic_skeleton/internal/vec3.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
 #include <CGAL/number_utils.h>
@@ -25,21 +26,14 @@ namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
 
-using Vec3 = std::array<double, 3>;
-
-inline Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-inline double norm(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
-
 // Distance from p to the line through a and b (to a when a and b coincide).
 inline double distance_to_line(const Vec3& p, const Vec3& a, const Vec3& b)
 {
-  const Vec3 ab = minus(b, a), ap = minus(p, a);
-  const double length = norm(ab);
+  const Vec3 ab = sub(b, a), ap = sub(p, a);
+  const double length = norm3(ab);
   if(length < 1e-300)
-    return norm(ap);
-  const Vec3 cross{ab[1] * ap[2] - ab[2] * ap[1], ab[2] * ap[0] - ab[0] * ap[2],
-                   ab[0] * ap[1] - ab[1] * ap[0]};
-  return norm(cross) / length;
+    return norm3(ap);
+  return norm3(cross3(ab, ap)) / length;
 }
 
 // A polyline parameterised by arc length, read at increasing arc lengths (each reader
@@ -65,7 +59,7 @@ public:
     }
     m_s.assign(m_points.size(), 0.0);
     for(std::size_t i = 1; i < m_points.size(); ++i)
-      m_s[i] = m_s[i - 1] + norm(minus(m_points[i], m_points[i - 1]));
+      m_s[i] = m_s[i - 1] + norm3(sub(m_points[i], m_points[i - 1]));
     m_length = closed ? m_s[n] : m_s.back();
     if(closed)
       m_offset = m_length; // arc length 0 is the start of the middle lap
@@ -176,7 +170,7 @@ OutputIterator chord_to_point_distance_accumulation(const PointRange& points, do
   for(std::size_t k = 0; k < p.size(); ++k)
   {
     if(k > 0)
-      s_k += internal::norm(internal::minus(p[k], p[k - 1]));
+      s_k += internal::norm3(internal::sub(p[k], p[k - 1]));
     double sum = 0;
     int count = 0;
     for(int t = 0; t <= chords; ++t)

@@ -172,7 +172,7 @@ void split_into_bones(const CurveSkeleton& skeleton, Control_skeleton<Point>& co
       {
         bone.points.emplace_back(points[k][0], points[k][1], points[k][2]);
         if(k > cuts[c])
-          bone.length += internal::norm(internal::minus(points[k], points[k - 1]));
+          bone.length += internal::norm3(internal::sub(points[k], points[k - 1]));
       }
       graph.bones.push_back(std::move(bone));
     }

@@ -38,12 +38,8 @@ struct Svg_view
   std::string name;
 };
 
-inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-inline Vec3 cross(const Vec3& a, const Vec3& b)
-{
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
+using Geodesic_skeleton::internal::cross3;
+using Geodesic_skeleton::internal::dot3;
 
 inline std::string joint_colour(Joint_kind kind)
 {
@@ -178,7 +174,7 @@ std::ostream& write_svg_views(std::ostream& os, const FaceGraph& mesh, const Svg
     for(const Vec3& p : t)
       for(int a = 0; a < 3; ++a)
       {
-        const double c = internal::dot(Geodesic_skeleton::internal::sub(p, frame.centroid), frame.axes[a]);
+        const double c = internal::dot3(Geodesic_skeleton::internal::sub(p, frame.centroid), frame.axes[a]);
         low[a] = std::min(low[a], c);
         high[a] = std::max(high[a], c);
       }
@@ -210,13 +206,13 @@ std::ostream& write_svg_views(std::ostream& os, const FaceGraph& mesh, const Svg
   for(std::size_t v = 0; v < views.size(); ++v)
   {
     const internal::Svg_view& view = views[v];
-    const Vec3 toward_viewer = internal::cross(view.right, view.up);
+    const Vec3 toward_viewer = internal::cross3(view.right, view.up);
     const double x0 = static_cast<double>(v) * view_size + view_size / 2.0;
     const double y0 = header + view_size / 2.0;
-    const double cr = internal::dot(frame.centroid, view.right), cu = internal::dot(frame.centroid, view.up);
+    const double cr = internal::dot3(frame.centroid, view.right), cu = internal::dot3(frame.centroid, view.up);
     auto screen = [&](const Vec3& p) {
-      return std::array<double, 2>{x0 + scale * (internal::dot(p, view.right) - cr),
-                                   y0 - scale * (internal::dot(p, view.up) - cu)};
+      return std::array<double, 2>{x0 + scale * (internal::dot3(p, view.right) - cr),
+                                   y0 - scale * (internal::dot3(p, view.up) - cu)};
     };
 
     // Front-facing triangles, back to front, with a grey level from the facing angle.
@@ -225,16 +221,16 @@ std::ostream& write_svg_views(std::ostream& os, const FaceGraph& mesh, const Svg
     for(std::size_t i = 0; i < triangles.size(); ++i)
     {
       const auto& t = triangles[i];
-      const Vec3 n = internal::cross(Geodesic_skeleton::internal::sub(t[1], t[0]),
+      const Vec3 n = internal::cross3(Geodesic_skeleton::internal::sub(t[1], t[0]),
                                      Geodesic_skeleton::internal::sub(t[2], t[0]));
-      const double length = std::sqrt(internal::dot(n, n));
+      const double length = std::sqrt(internal::dot3(n, n));
       if(!(length > 0))
         continue;
-      const double facing = internal::dot(n, toward_viewer) / length;
+      const double facing = internal::dot3(n, toward_viewer) / length;
       if(facing <= 0)
         continue;
-      const double depth = internal::dot(t[0], toward_viewer) + internal::dot(t[1], toward_viewer) +
-                           internal::dot(t[2], toward_viewer);
+      const double depth = internal::dot3(t[0], toward_viewer) + internal::dot3(t[1], toward_viewer) +
+                           internal::dot3(t[2], toward_viewer);
       drawn.push_back({depth, static_cast<int>(std::min(15.0, facing * 16)), i});
     }
     // Back to front by slabs of depth (a 48th of the depth range each), and by grey within

@@ -30,12 +30,12 @@ struct Bone_splitting_settings
 // Distance from p to the segment [a, b].
 inline double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b)
 {
-  const Vec3 ab = minus(b, a), ap = minus(p, a);
+  const Vec3 ab = sub(b, a), ap = sub(p, a);
   const double l2 = ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2];
   double t = l2 > 0 ? (ap[0] * ab[0] + ap[1] * ab[1] + ap[2] * ab[2]) / l2 : 0.0;
   t = std::clamp(t, 0.0, 1.0);
   const Vec3 q{a[0] + t * ab[0], a[1] + t * ab[1], a[2] + t * ab[2]};
-  return norm(minus(p, q));
+  return norm3(sub(p, q));
 }
 
 class Branch_splitter
@@ -46,7 +46,7 @@ public:
     : m_p(points), m_r(radii), m_settings(settings), m_s(points.size(), 0.0)
   {
     for(std::size_t i = 1; i < m_p.size(); ++i)
-      m_s[i] = m_s[i - 1] + norm(minus(m_p[i], m_p[i - 1]));
+      m_s[i] = m_s[i - 1] + norm3(sub(m_p[i], m_p[i - 1]));
   }
 
   // The indices where the branch is cut into bones, from 0 to N-1 included, increasing.

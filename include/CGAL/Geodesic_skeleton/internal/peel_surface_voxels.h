@@ -11,6 +11,7 @@
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
 #include <CGAL/Geodesic_skeleton/internal/principal_frame.h>
+#include <CGAL/Geodesic_skeleton/internal/simple_point.h>
 
 #include <algorithm>
 #include <array>
@@ -152,98 +153,12 @@ inline bool vote_along_lines(const std::vector<std::array<Vec3, 3>>& g, int axis
   return all_trusted;
 }
 
-// Whether removing a voxel from the object keeps the background locally in one piece:
-// T6(x, ~X) = 1 in the notation of internal/simple_point.h (the 6-components of the
-// background in N18*(x) that are 6-adjacent to x), for a 26-bit mask of the object in
-// N26*(x) in the order of neighbourhood_26(). It is 0 for a voxel with no background face
-// neighbour (its removal would open a cavity) and 2 or more where its removal would open
-// a tunnel (a voxel filling a hole of a thin sheet). Removals that pass the test may still
-// disconnect the object or cut a handle: those are the removals peel_surface_voxels wants,
-// and it restores the connections it must keep.
-class Background_test
-{
-public:
-  static const Background_test& instance()
-  {
-    static const Background_test test;
-    return test;
-  }
+// The local tests of the peeling are those of the simple-point test
+// (internal/simple_point.h): Simple_point_test::background_is_one_piece() (T6 = 1: no
+// cavity or tunnel opened) and Simple_point_test::object_is_split() (T26 >= 2). Removals
+// that pass the first may still disconnect the object or cut a handle: those are the
+// removals peel_surface_voxels wants, and it restores the connections it must keep.
 
-  bool background_is_one_piece(std::uint32_t object) const
-  {
-    const std::uint32_t background18 = ~object & m_n18;
-    const std::uint32_t faces = background18 & m_faces;
-    if(faces == 0)
-      return false;
-    std::uint32_t component = faces & (~faces + 1u), frontier = component;
-    while(frontier != 0 && (component & faces) != faces)
-    {
-      std::uint32_t next = 0;
-      while(frontier != 0)
-      {
-        int i = 0;
-        while(!((frontier >> i) & 1u))
-          ++i;
-        frontier &= frontier - 1;
-        next |= m_adjacent6[std::size_t(i)];
-      }
-      frontier = next & background18 & ~component;
-      component |= frontier;
-    }
-    return (component & faces) == faces;
-  }
-
-  // Whether the object in N26*(x) has two 26-components or more (T26(x, X) >= 2).
-  bool object_is_split(std::uint32_t object) const
-  {
-    if(object == 0)
-      return false;
-    std::uint32_t component = object & (~object + 1u), frontier = component;
-    while(frontier != 0)
-    {
-      std::uint32_t next = 0;
-      while(frontier != 0)
-      {
-        int i = 0;
-        while(!((frontier >> i) & 1u))
-          ++i;
-        frontier &= frontier - 1;
-        next |= m_adjacent26[std::size_t(i)];
-      }
-      frontier = next & object & ~component;
-      component |= frontier;
-    }
-    return component != object;
-  }
-
-private:
-  Background_test()
-  {
-    const auto& n = neighbourhood_26();
-    for(int i = 0; i < 26; ++i)
-    {
-      if(offset_order(n[std::size_t(i)]) == 1)
-        m_faces |= 1u << i;
-      if(offset_order(n[std::size_t(i)]) <= 2)
-        m_n18 |= 1u << i;
-      for(int j = 0; j < 26; ++j)
-      {
-        const Voxel_key& a = n[std::size_t(i)];
-        const Voxel_key& b = n[std::size_t(j)];
-        const int manhattan = std::abs(a.x - b.x) + std::abs(a.y - b.y) + std::abs(a.z - b.z);
-        if(manhattan == 1 && offset_order(a) <= 2 && offset_order(b) <= 2)
-          m_adjacent6[std::size_t(i)] |= 1u << j;
-        if(i != j && are_26_adjacent(a, b))
-          m_adjacent26[std::size_t(i)] |= 1u << j;
-      }
-    }
-  }
-
-  std::uint32_t m_faces = 0, m_n18 = 0;
-  std::array<std::uint32_t, 26> m_adjacent6{}, m_adjacent26{};
-};
-
-// Union-find over component numbers, with path halving.
 struct Union_find
 {
   std::vector<std::uint32_t> parent;
@@ -387,7 +302,7 @@ inline void peel_surface_voxels(const std::vector<std::array<Vec3, 3>>& g, const
   // around them stays one piece (no new tunnel, no cavity); a removal re-examines the near
   // neighbours still there. The near candidates that stay are kept.
   {
-    const Background_test& test = Background_test::instance();
+    const Simple_point_test& test = Simple_point_test::instance();
     auto object_mask = [&](std::size_t i) {
       std::uint32_t mask = 0;
       for(std::size_t n = 0; n < 26; ++n)

@@ -69,6 +69,23 @@ public:
     return grow(object & (~object + 1u), object, m_adjacent26, object);
   }
 
+  // T6(x, ~X) = 1: the background in N18*(x) 6-adjacent to x is one 6-component. False
+  // for a voxel without background face neighbour (its removal would open a cavity), and
+  // where its removal would open a tunnel.
+  bool background_is_one_piece(std::uint32_t object) const
+  {
+    const std::uint32_t background18 = ~object & m_n18;
+    const std::uint32_t background_faces = background18 & m_faces;
+    return background_faces != 0 && grow(background_faces & (~background_faces + 1u), background18,
+                                         m_adjacent6, background_faces);
+  }
+
+  // T26(x, X) >= 2: the object in N26*(x) falls into two 26-components or more.
+  bool object_is_split(std::uint32_t object) const
+  {
+    return object != 0 && !grow(object & (~object + 1u), object, m_adjacent26, object);
+  }
+
   // Whether bit i is a face neighbour.
   std::uint32_t face_mask() const { return m_faces; }
 

@@ -4,6 +4,8 @@
 #ifndef CGAL_GEODESIC_SKELETON_INTERNAL_TRIANGLE_BOX_OVERLAP_H
 #define CGAL_GEODESIC_SKELETON_INTERNAL_TRIANGLE_BOX_OVERLAP_H
 
+#include <CGAL/Geodesic_skeleton/internal/vec3.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -11,15 +13,6 @@
 namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
-
-using Vec3 = std::array<double, 3>;
-
-inline Vec3 sub(const Vec3& a, const Vec3& b) { return Vec3{a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-inline double dot3(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-inline Vec3 cross3(const Vec3& a, const Vec3& b)
-{
-  return Vec3{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 
 // Whether the triangle (a, b, c) meets the axis-aligned cube of centre `centre` and half
 // edge `half`: the separating axis theorem with the 13 candidate axes (3 cube normals, the
