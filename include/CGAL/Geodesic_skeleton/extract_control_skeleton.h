@@ -14,7 +14,7 @@
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/geodesic_mapping_function.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
-#include <CGAL/Geodesic_skeleton/internal/joints_inside.h>
+#include <CGAL/Geodesic_skeleton/internal/closed_mesh_interior.h>
 #include <CGAL/Geodesic_skeleton/internal/recentre_thin_parts.h>
 #include <CGAL/Geodesic_skeleton/prune_skeleton.h>
 #include <CGAL/Geodesic_skeleton/reeb_graph.h>

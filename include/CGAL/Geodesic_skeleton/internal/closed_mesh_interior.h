@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Geodesic_skeleton authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_GEODESIC_SKELETON_INTERNAL_JOINTS_INSIDE_H
-#define CGAL_GEODESIC_SKELETON_INTERNAL_JOINTS_INSIDE_H
+#ifndef CGAL_GEODESIC_SKELETON_INTERNAL_CLOSED_MESH_INTERIOR_H
+#define CGAL_GEODESIC_SKELETON_INTERNAL_CLOSED_MESH_INTERIOR_H
 
 #include <CGAL/Geodesic_skeleton/Control_skeleton.h>
 #include <CGAL/Geodesic_skeleton/internal/principal_frame.h>
@@ -107,50 +107,43 @@ inline Vec3 closest_point_on_triangle(const Vec3& p, const Triangle3& t)
   return Vec3{t[0][0] + ab[0] * v + ac[0] * w, t[0][1] + ab[1] * v + ac[1] * w, t[0][2] + ab[2] * v + ac[2] * w};
 }
 
-// Moves every joint that lies outside a closed triangle mesh (a limb thinner than a couple
-// of voxels can put one up to about half a voxel out) just inside it: to the nearest point
-// of the surface, then `depth` further in (halving the step while it would leave the mesh
-// on the other side). Only joints of medial radius under `deep_radius` are in doubt: a
-// deeper one sits inside. The bones' end points follow their joints. Returns how many
-// joints moved; a mesh that is not a closed triangle mesh has no inside to test and is
-// left alone.
-//
-// Complexity: O(D F) for D doubtful joints and F faces (D is a handful: limb tips).
-template <typename TriangleMesh, typename VertexPointMap, typename Point>
-std::size_t move_joints_inside(const TriangleMesh& mesh, VertexPointMap vpm, Control_skeleton<Point>& control,
-                               double depth, double deep_radius)
+// The triangles of a closed triangle mesh, to ask whether points are inside it and to move
+// the ones outside just in. Empty (and every answer "leave it") for a mesh that is not a
+// closed triangle mesh: it has no inside to test.
+class Closed_mesh_interior
 {
-  std::vector<std::size_t> doubtful;
-  for(std::size_t j = 0; j < control.joints.size(); ++j)
-    if(control.joints[j].radius < deep_radius)
-      doubtful.push_back(j);
-  if(doubtful.empty() || !CGAL::is_closed(mesh) || !CGAL::is_triangle_mesh(mesh))
-    return 0;
-
-  std::vector<Triangle3> triangles;
-  triangles.reserve(static_cast<std::size_t>(num_faces(mesh)));
-  for(auto f : faces(mesh))
+public:
+  template <typename TriangleMesh, typename VertexPointMap>
+  Closed_mesh_interior(const TriangleMesh& mesh, VertexPointMap vpm)
   {
-    Triangle3 t;
-    int c = 0;
-    for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+    if(!CGAL::is_closed(mesh) || !CGAL::is_triangle_mesh(mesh))
+      return;
+    m_triangles.reserve(static_cast<std::size_t>(num_faces(mesh)));
+    for(auto f : faces(mesh))
     {
-      const auto& p = get(vpm, v);
-      t[c++] = Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+      Triangle3 t;
+      int c = 0;
+      for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      {
+        const auto& p = get(vpm, v);
+        t[c++] = Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+      }
+      m_triangles.push_back(t);
     }
-    triangles.push_back(t);
   }
 
-  std::size_t moved = 0;
-  for(std::size_t j : doubtful)
+  bool has_interior() const { return !m_triangles.empty(); }
+
+  // Moves `p` from outside the mesh to the nearest point of the surface and `depth` further
+  // in (halving the step while it would leave the mesh on the other side). Returns whether
+  // it moved; a point inside, or any point of a mesh without interior, stays.
+  bool move_inside(Vec3& p, double depth) const
   {
-    Point& joint = control.joints[j].point;
-    const Vec3 p{CGAL::to_double(joint.x()), CGAL::to_double(joint.y()), CGAL::to_double(joint.z())};
-    if(is_inside_closed_soup(p, triangles))
-      continue;
+    if(!has_interior() || is_inside_closed_soup(p, m_triangles))
+      return false;
     Vec3 nearest = p;
     double best = std::numeric_limits<double>::infinity();
-    for(const Triangle3& t : triangles)
+    for(const Triangle3& t : m_triangles)
     {
       const Vec3 q = closest_point_on_triangle(p, t);
       const double d = dot3(sub(q, p), sub(q, p));
@@ -161,19 +154,52 @@ std::size_t move_joints_inside(const TriangleMesh& mesh, VertexPointMap vpm, Con
       }
     }
     const Vec3 in = sub(nearest, p);
-    const double length = std::sqrt(dot3(in, in));
+    const double length = norm3(in);
     if(!(length > 0))
-      continue;
+      return false;
     for(double step = depth; step > 1e-6 * depth; step /= 2)
     {
       const Vec3 candidate{nearest[0] + step * in[0] / length, nearest[1] + step * in[1] / length,
                            nearest[2] + step * in[2] / length};
-      if(is_inside_closed_soup(candidate, triangles))
+      if(is_inside_closed_soup(candidate, m_triangles))
       {
-        joint = Point(candidate[0], candidate[1], candidate[2]);
-        ++moved;
-        break;
+        p = candidate;
+        return true;
       }
+    }
+    return false;
+  }
+
+private:
+  std::vector<Triangle3> m_triangles;
+};
+
+// Moves every joint that lies outside a closed triangle mesh (a limb thinner than a couple
+// of voxels can put one up to about half a voxel out) just inside it (see
+// Closed_mesh_interior::move_inside). Only joints of medial radius under `deep_radius` are
+// in doubt: a deeper one sits inside. The bones' end points follow their joints. Returns
+// how many joints moved.
+//
+// Complexity: O(D F) for D doubtful joints and F faces (D is a handful: limb tips).
+template <typename TriangleMesh, typename VertexPointMap, typename Point>
+std::size_t move_joints_inside(const TriangleMesh& mesh, VertexPointMap vpm, Control_skeleton<Point>& control,
+                               double depth, double deep_radius)
+{
+  const bool doubt = std::any_of(control.joints.begin(), control.joints.end(),
+                                 [&](const Control_joint<Point>& j) { return j.radius < deep_radius; });
+  if(!doubt)
+    return 0;
+  const Closed_mesh_interior interior(mesh, vpm);
+  std::size_t moved = 0;
+  for(Control_joint<Point>& joint : control.joints)
+  {
+    if(joint.radius >= deep_radius)
+      continue;
+    Vec3 p{CGAL::to_double(joint.point.x()), CGAL::to_double(joint.point.y()), CGAL::to_double(joint.point.z())};
+    if(interior.move_inside(p, depth))
+    {
+      joint.point = Point(p[0], p[1], p[2]);
+      ++moved;
     }
   }
   if(moved > 0)
@@ -190,4 +216,4 @@ std::size_t move_joints_inside(const TriangleMesh& mesh, VertexPointMap vpm, Con
 } // namespace Geodesic_skeleton
 } // namespace CGAL
 
-#endif // CGAL_GEODESIC_SKELETON_INTERNAL_JOINTS_INSIDE_H
+#endif // CGAL_GEODESIC_SKELETON_INTERNAL_CLOSED_MESH_INTERIOR_H
