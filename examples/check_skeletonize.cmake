@@ -50,6 +50,16 @@ if(NOT svg MATCHES "^<svg")
   message(FATAL_ERROR "the preview is not an SVG file")
 endif()
 
+# Peeling the surface voxels opens the camel-like false loops; here it must run and give a
+# control skeleton too.
+run(${MESH} --peel-surface-voxels -o ${WORK_DIR}/peeled.json)
+file(READ ${WORK_DIR}/peeled.json peeled)
+string(JSON peeled_flag GET "${peeled}" parameters keep_surface_voxels)
+string(JSON peeled_bones LENGTH "${peeled}" control bones)
+if(peeled_flag OR peeled_bones LESS 1)
+  message(FATAL_ERROR "--peel-surface-voxels: keep_surface_voxels ${peeled_flag}, ${peeled_bones} bones")
+endif()
+
 # Without -o the JSON goes to standard output.
 run(${MESH} --resolution 32)
 string(JSON value ERROR_VARIABLE error GET "${stdout}" control bones)

@@ -57,6 +57,7 @@ struct Options
   double minimum_bone_length_factor = 2.0;
   std::size_t reeb_intervals = 30;
   bool fill_holes = true;
+  bool keep_surface_voxels = true;
 };
 
 const char* const usage_text = R"(usage: skeletonize INPUT_MESH [-o OUT] [--resolution N] [--svg PREVIEW.svg] [options]
@@ -72,6 +73,8 @@ OFF, OBJ, PLY, STL, ...). Without -o, writes the JSON report to standard output.
                              curve skeleton), thinned (the curve skeleton after thinning), reeb
   --resolution N             voxels along the longest principal axis, 4..8192 (default 64)
   --no-fill-holes            do not close the mesh's holes before voxelizing
+  --peel-surface-voxels      drop the surface voxels whose centre is outside the mesh (opens
+                             false loops between parts that nearly touch; default: kept)
   --spur-length F            snip end branches shorter than F MAT radii, 0..100 (default 1.2)
   --smoothing-window W       points averaged along branches, odd, 1..1001 (default 5)
   --bend-threshold T         chord-to-point accumulation that makes a joint, 0..1 (default 0.08)
@@ -113,6 +116,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--svg-stage") o.svg_stage = value();
     else if(a == "--resolution") o.resolution = parse_number<int>(a, value());
     else if(a == "--no-fill-holes") o.fill_holes = false;
+    else if(a == "--peel-surface-voxels") o.keep_surface_voxels = false;
     else if(a == "--spur-length") o.spur_length_factor = parse_number<double>(a, value());
     else if(a == "--smoothing-window") o.smoothing_window = parse_number<int>(a, value());
     else if(a == "--bend-threshold") o.bend_threshold = parse_number<double>(a, value());
@@ -211,6 +215,7 @@ int run(const Options& o)
     report = gs::extract_control_skeleton(
         mesh, control,
         params::combine(params::resolution(o.resolution), params::fill_holes(o.fill_holes),
+                        params::keep_surface_voxels(o.keep_surface_voxels),
                         params::spur_length_factor(o.spur_length_factor),
                         params::smoothing_window(o.smoothing_window),
                         params::bend_threshold(o.bend_threshold),
@@ -240,6 +245,7 @@ int run(const Options& o)
         {"mesh", {{"vertices", num_vertices(mesh)}, {"faces", num_faces(mesh)},
                   {"closed", CGAL::is_closed(mesh)}, {"components", components}}},
         {"parameters", {{"resolution", o.resolution}, {"fill_holes", o.fill_holes},
+                        {"keep_surface_voxels", o.keep_surface_voxels},
                         {"spur_length_factor", o.spur_length_factor},
                         {"smoothing_window", o.smoothing_window},
                         {"bend_threshold", o.bend_threshold},
