@@ -8,13 +8,18 @@
 // Prints the joints and bones; writes OUT.bvh when given. Exits with 1 on bad input.
 
 #include <CGAL/Geodesic_skeleton/IO/bvh.h>
+#include <CGAL/Geodesic_skeleton/chord_to_point_distance_accumulation.h>
 #include <CGAL/Geodesic_skeleton/extract_control_skeleton.h>
+#include <CGAL/Geodesic_skeleton/split_into_bones.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <iterator>
+#include <vector>
 #include <exception>
 #include <fstream>
 #include <iostream>
@@ -64,6 +69,27 @@ int main(int argc, char* argv[])
     //! [control_skeleton]
     std::cout << control.joints.size() << " joints, " << control.bones.size() << " bones, in "
               << report.total_ms << " ms\n";
+
+    //! [split_into_bones]
+    // The later stages alone, on the curve skeleton the chain hands back: a coarser rig
+    // (joints at bends of 45 degrees or more only, bones allowed to stray by 1.5 radii from
+    // straight) from the same smoothed skeleton...
+    GS::Curve_skeleton<Point, boost::graph_traits<Mesh>::vertex_descriptor> curve;
+    GS::extract_control_skeleton(mesh, control, GS::parameters::curve_skeleton_output(&curve));
+    GS::Control_skeleton<Point> coarse;
+    GS::split_into_bones(curve, coarse,
+                         GS::parameters::combine(GS::parameters::bend_threshold(0.126),
+                                                 GS::parameters::straightness_tolerance(1.5)));
+
+    // ... and the chord-to-point distance accumulation along the longest bone, with chords
+    // of a third of its length: where it peaks, the bone bends most.
+    const auto& longest = *std::max_element(control.bones.begin(), control.bones.end(),
+                                            [](const auto& a, const auto& b) { return a.length < b.length; });
+    std::vector<double> bend;
+    GS::chord_to_point_distance_accumulation(longest.points, longest.length / 3, std::back_inserter(bend));
+    //! [split_into_bones]
+    std::cout << "coarser rig: " << coarse.bones.size() << " bones; longest bone: " << longest.points.size()
+              << " points, largest accumulation " << *std::max_element(bend.begin(), bend.end()) << "\n";
   }
   catch(const std::exception& e)
   {
