@@ -221,10 +221,9 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   to_graph(skeleton, distances, mesh, curve, np);
   // A skeleton vertex whose voxel the surface crosses (radius under one voxel) moves to
   // the centroid of the mesh vertices around it, inside the thin limb it stands for.
-  internal::recentre_thin_parts(curve,
-                                choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                                 get_const_property_map(CGAL::vertex_point, mesh)),
-                                report.voxel_size);
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, mesh));
+  internal::recentre_thin_parts(curve, vpm, report.voxel_size);
   report.pruned = skeleton_statistics(curve);
   clock.finished("to_graph");
 
@@ -234,10 +233,7 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   split_into_bones(curve, out, np);
   clock.finished("split_into_bones");
   report.joints_moved_inside = internal::move_joints_inside(
-      mesh,
-      choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                       get_const_property_map(CGAL::vertex_point, mesh)),
-      out, 0.25 * report.voxel_size, 2 * report.voxel_size);
+      mesh, vpm, out, 0.25 * report.voxel_size, 2 * report.voxel_size);
   clock.finished("joints_inside");
   if constexpr(!is_default_parameter<NamedParameters, internal_np::curve_skeleton_output_t>::value)
     *get_parameter(np, internal_np::curve_skeleton_output_tag) = std::move(curve);

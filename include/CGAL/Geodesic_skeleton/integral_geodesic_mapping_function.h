@@ -9,6 +9,7 @@
 /// integral of the geodesic distance over the surface, normalised to [0, 1].
 
 #include <CGAL/Geodesic_skeleton/internal/distance_fields.h>
+#include <CGAL/Geodesic_skeleton/internal/vec3.h>
 #include <CGAL/Geodesic_skeleton/internal/vertex_components.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
@@ -35,7 +36,7 @@ std::vector<double> vertex_areas(const FaceGraph& g, VertexPointMap vpm, VertexI
   std::vector<double> area(static_cast<std::size_t>(num_vertices(g)), 0.0);
   for(auto f : faces(g))
   {
-    std::vector<std::array<double, 3>> corners;
+    std::vector<Vec3> corners;
     std::vector<std::size_t> ids;
     for(auto v : CGAL::vertices_around_face(halfedge(f, g), g))
     {
@@ -46,15 +47,7 @@ std::vector<double> vertex_areas(const FaceGraph& g, VertexPointMap vpm, VertexI
     double face_area = 0;
     for(std::size_t k = 1; k + 1 < corners.size(); ++k)
     {
-      double u[3], w[3];
-      for(int c = 0; c < 3; ++c)
-      {
-        u[c] = corners[k][c] - corners[0][c];
-        w[c] = corners[k + 1][c] - corners[0][c];
-      }
-      face_area += 0.5 * std::sqrt(std::pow(u[1] * w[2] - u[2] * w[1], 2) +
-                                   std::pow(u[2] * w[0] - u[0] * w[2], 2) +
-                                   std::pow(u[0] * w[1] - u[1] * w[0], 2));
+      face_area += 0.5 * norm3(cross3(sub(corners[k], corners[0]), sub(corners[k + 1], corners[0])));
     }
     for(std::size_t i : ids)
       area[i] += face_area / static_cast<double>(ids.size());

@@ -152,8 +152,8 @@ void reeb_graph(const FaceGraph& mesh, VertexScalarMap field, std::size_t number
 
   // Nodes and arcs from the pieces of the faces between level sets.
   auto interval_of_vertex = [&](vertex_descriptor v) { return interval[index(v)]; };
-  const internal::Reeb_pieces pieces =
-      internal::reeb_pieces(mesh, CGAL::get_initialized_face_index_map(mesh, np), interval_of_vertex);
+  const auto fim = CGAL::get_initialized_face_index_map(mesh, np);
+  const internal::Reeb_pieces pieces = internal::reeb_pieces(mesh, fim, interval_of_vertex);
   reeb.clear();
   const double step = (high - low) / static_cast<double>(number_of_intervals);
   for(std::size_t k = 0; k < pieces.nodes; ++k)
@@ -163,7 +163,6 @@ void reeb_graph(const FaceGraph& mesh, VertexScalarMap field, std::size_t number
 
   // Each vertex goes to the node of its interval's piece in a face around it; a node's
   // point is the centroid of its vertices, or of the faces it crosses when it has none.
-  const auto fim = CGAL::get_initialized_face_index_map(mesh, np);
   std::vector<std::array<double, 4>> vertex_sum(pieces.nodes, {0, 0, 0, 0}), face_sum(pieces.nodes, {0, 0, 0, 0});
   auto position = [&](vertex_descriptor v) {
     const auto& p = get(vpm, v);

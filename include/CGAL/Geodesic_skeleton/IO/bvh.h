@@ -8,6 +8,7 @@
 /// Writes a control skeleton as a BVH (Biovision hierarchy) file with a one-frame rest pose.
 
 #include <CGAL/Geodesic_skeleton/Control_skeleton.h>
+#include <CGAL/Geodesic_skeleton/internal/vec3.h>
 
 #include <CGAL/number_utils.h>
 
@@ -32,6 +33,7 @@ struct Bvh_writer
   const Control_skeleton<Point>& skeleton;
   std::ostream& os;
   std::vector<std::vector<std::size_t>> children;
+  std::size_t written = 0; // joints written so far
 
   static std::string joint_name(std::size_t j, Joint_kind kind)
   {
@@ -58,7 +60,7 @@ struct Bvh_writer
     if(parent < 0)
       return {0, std::max(skeleton.joints[j].radius, 1e-6), 0};
     const auto p = position(j), q = position(static_cast<std::size_t>(parent));
-    const double length = std::sqrt(std::pow(p[0] - q[0], 2) + std::pow(p[1] - q[1], 2) + std::pow(p[2] - q[2], 2));
+    const double length = Geodesic_skeleton::internal::norm3(Geodesic_skeleton::internal::sub(p, q));
     const double extent = std::max(skeleton.joints[j].radius, 1e-3 * length);
     for(int c = 0; c < 3; ++c)
       d[c] = length > 0 ? (p[c] - q[c]) / length * extent : 0.0;
@@ -70,6 +72,7 @@ struct Bvh_writer
   void write_joint(std::size_t j, int depth)
   {
     const Control_joint<Point>& joint = skeleton.joints[j];
+    ++written;
     indent(depth);
     os << (joint.parent < 0 ? "ROOT " : "JOINT ") << joint_name(j, joint.kind) << '\n';
     indent(depth);
@@ -141,19 +144,8 @@ std::ostream& write_BVH(std::ostream& os, const Control_skeleton<Point>& skeleto
   const std::size_t root = skeleton.roots[tree];
   writer.write_joint(root, 0);
 
-  // Count the channels of the written tree for the motion line.
-  std::size_t joints = 0;
-  std::vector<std::size_t> stack{root};
-  while(!stack.empty())
-  {
-    const std::size_t j = stack.back();
-    stack.pop_back();
-    ++joints;
-    for(std::size_t c : writer.children[j])
-      stack.push_back(c);
-  }
   os << "MOTION\nFrames: 1\nFrame Time: 0.0333333\n";
-  const std::size_t channels = 6 + 3 * (joints - 1);
+  const std::size_t channels = 6 + 3 * (writer.written - 1);
   for(std::size_t c = 0; c < channels; ++c)
     os << (c == 0 ? "" : " ") << 0;
   os << '\n';
