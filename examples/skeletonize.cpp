@@ -255,6 +255,7 @@ int run(const Options& o)
         {"timings_ms", timings},
         {"stages", {{"solid", {{"voxels", report.solid_voxels}}},
                     {"thinned", stage_json(report.thinned)},
+                    {"spurious_cycles", {{"cut", report.spurious_cycles_cut}}},
                     {"pruned", stage_json(report.pruned)},
                     {"reeb", {{"nodes", report.reeb_nodes}, {"edges", report.reeb_edges}}}}},
         {"skeleton", gs::IO::curve_skeleton_to_json(curve)},

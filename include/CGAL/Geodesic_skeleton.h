@@ -25,6 +25,7 @@
 #include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/thin.h>
+#include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>
 
 // Pruning (Algorithm 1) and the curve skeleton.
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>

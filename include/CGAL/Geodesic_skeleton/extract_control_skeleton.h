@@ -11,11 +11,11 @@
 #include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
+#include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/geodesic_mapping_function.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 #include <CGAL/Geodesic_skeleton/internal/closed_mesh_interior.h>
-#include <CGAL/Geodesic_skeleton/internal/recentre_thin_parts.h>
 #include <CGAL/Geodesic_skeleton/prune_skeleton.h>
 #include <CGAL/Geodesic_skeleton/reeb_graph.h>
 #include <CGAL/Geodesic_skeleton/skeleton_statistics.h>
@@ -47,6 +47,7 @@ struct Control_skeleton_report
   double voxel_size = 0;           ///< edge of a voxel, in world units
   std::size_t solid_voxels = 0;    ///< voxels of the solid interior
   Skeleton_statistics thinned;     ///< the curve skeleton after thinning
+  std::size_t spurious_cycles_cut = 0; ///< cycles the mesh has no handle for, opened (`cut_spurious_cycles()`)
   Skeleton_statistics pruned;      ///< after pruning (Algorithm 1 and snipping)
   Pruning_report pruning;          ///< what pruning removed
   std::size_t joints_moved_inside = 0; ///< joints that lay outside the (closed) mesh and were moved in
@@ -54,7 +55,7 @@ struct Control_skeleton_report
   std::size_t reeb_edges = 0;      ///< arcs of the Reeb graph, when one was asked for
   /// Wall-clock time of each stage in milliseconds, in the order they ran: "voxelize",
   /// "distance_transform", "thin", "thinned_graph" (the graph and counts of the thinned
-  /// skeleton), "prune", "to_graph", "smooth", "split_into_bones", "joints_inside", and
+  /// skeleton), "cut_spurious_cycles", "prune", "to_graph", "smooth", "split_into_bones", "joints_inside", and
   /// "reeb_graph" when asked for.
   std::vector<std::pair<std::string, double>> timings_ms;
   double total_ms = 0;             ///< the whole call, in milliseconds
@@ -124,11 +125,9 @@ private:
 /// mapped to it), `smooth_skeleton()` (5-point moving average) and `split_into_bones()`
 /// (joints and bones, rooted at the most central junction).
 ///
-/// Between `to_graph()` and `smooth_skeleton()`, a skeleton vertex whose medial radius is
-/// under one voxel (its voxel touches the surface: a limb about a voxel thick) moves from
-/// its voxel centre, which may lie outside the mesh, to the centroid of the mesh vertices
-/// mapped to it and to its neighbours, which ring the limb there (or cap its tip) and so
-/// lie around its axis.
+/// Between `thin()` and `prune_skeleton()`, `cut_spurious_cycles()` opens the cycles of
+/// the skeleton that the mesh has no handle for (where parts come within a voxel of each
+/// other, the solid joins them).
 ///
 /// The result is in the mesh's own coordinates and does not change (beyond the rounding
 /// of coordinates) when the mesh is rotated or moved, since the grid follows the mesh's
@@ -206,24 +205,34 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   solid.for_each([&](const Voxel_key& k) { skeleton.insert(k); });
   clock.finished("thin");
 
-  Skeleton thinned;
-  to_graph(skeleton, distances, mesh, thinned, np);
-  report.thinned = skeleton_statistics(thinned);
+  // The mesh's faces in the grid, for the inside tests of cut_spurious_cycles() and
+  // to_graph(): built once, when first needed.
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, mesh));
+  const double memory_limit = internal::memory_limit(np);
+  internal::Lazy_mesh_grid_lines<FaceGraph, decltype(vpm)> mesh_lines(
+      mesh, vpm, solid.frame(), choose_parameter(get_parameter(np, internal_np::fill_holes_tag), true),
+      "extract_control_skeleton");
   if constexpr(!is_default_parameter<NamedParameters, internal_np::thinned_skeleton_output_t>::value)
+  {
+    Skeleton thinned;
+    internal::to_graph_impl(skeleton, distances, mesh, thinned, vpm, memory_limit, mesh_lines);
+    report.thinned = skeleton_statistics(thinned);
     *get_parameter(np, internal_np::thinned_skeleton_output_tag) = std::move(thinned);
+  }
+  else
+    report.thinned = internal::skeleton_statistics_of_voxels(skeleton);
   clock.finished("thinned_graph");
+
+  report.spurious_cycles_cut = internal::cut_spurious_cycles_impl(skeleton, mesh, mesh_lines);
+  clock.finished("cut_spurious_cycles");
 
   report.pruning = prune_skeleton(
       skeleton, parameters::combine(parameters::mat_radius_map(internal::Radius_in_voxels_map{&distances}), np));
   clock.finished("prune");
 
   Skeleton curve;
-  to_graph(skeleton, distances, mesh, curve, np);
-  // A skeleton vertex whose voxel the surface crosses (radius under one voxel) moves to
-  // the centroid of the mesh vertices around it, inside the thin limb it stands for.
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, mesh));
-  internal::recentre_thin_parts(curve, vpm, report.voxel_size);
+  internal::to_graph_impl(skeleton, distances, mesh, curve, vpm, memory_limit, mesh_lines);
   report.pruned = skeleton_statistics(curve);
   clock.finished("to_graph");
 

@@ -7,6 +7,9 @@
 /// \file skeleton_statistics.h
 /// Counts that describe the shape of a skeleton graph.
 
+#include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
+#include <CGAL/Geodesic_skeleton/internal/skeleton_adjacency.h>
+
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/connected_components.hpp>
 
@@ -54,6 +57,25 @@ Skeleton_statistics skeleton_statistics(const Graph& g)
   s.cycles = s.edges + s.components - s.points;
   return s;
 }
+
+namespace internal {
+
+// skeleton_statistics() of the graph that to_graph() would make of a voxel skeleton, without
+// its points and mesh vertices.
+template <typename VoxelSet>
+Skeleton_statistics skeleton_statistics_of_voxels(const VoxelSet& skeleton)
+{
+  if(skeleton.size() == 0)
+    return Skeleton_statistics();
+  const Skeleton_adjacency adjacency =
+      skeleton_adjacency(skeleton, Grid_layout(require_nonempty_box(skeleton, 0, "skeleton_statistics")));
+  boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS> graph(adjacency.nodes.size());
+  for(const auto& e : adjacency.edges)
+    add_edge(std::size_t(e.first), std::size_t(e.second), graph);
+  return skeleton_statistics(graph);
+}
+
+} // namespace internal
 
 } // namespace Geodesic_skeleton
 } // namespace CGAL

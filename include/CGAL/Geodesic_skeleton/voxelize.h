@@ -11,6 +11,7 @@
 #include <CGAL/Geodesic_skeleton/Voxel_frame.h>
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
+#include <CGAL/Geodesic_skeleton/internal/mesh_triangles.h>
 #include <CGAL/Geodesic_skeleton/internal/peel_surface_voxels.h>
 #include <CGAL/Geodesic_skeleton/internal/principal_frame.h>
 #include <CGAL/Geodesic_skeleton/internal/triangle_box_overlap.h>
@@ -38,85 +39,6 @@ namespace Geodesic_skeleton {
 constexpr int default_voxel_resolution = 64;
 
 namespace internal {
-
-// The triangles of the faces of `mesh` (a face with more than three vertices is split into
-// a fan), with finite coordinates checked.
-template <typename FaceGraph, typename VertexPointMap>
-std::vector<Triangle3> mesh_triangles(const FaceGraph& mesh, VertexPointMap vpm, const char* caller)
-{
-  std::vector<Triangle3> triangles;
-  triangles.reserve(static_cast<std::size_t>(num_faces(mesh)));
-  std::vector<Vec3> corners;
-  for(auto f : faces(mesh))
-  {
-    corners.clear();
-    for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
-    {
-      const auto& p = get(vpm, v);
-      const Vec3 q{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-      if(!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
-        throw std::invalid_argument(std::string(caller) +
-                                    ": a vertex has a non-finite coordinate (NaN or infinite)");
-      corners.push_back(q);
-    }
-    for(std::size_t i = 1; i + 1 < corners.size(); ++i)
-      triangles.push_back(Triangle3{corners[0], corners[i], corners[i + 1]});
-  }
-  if(triangles.empty())
-    throw std::invalid_argument(std::string(caller) + ": the mesh has no faces");
-  return triangles;
-}
-
-// Closes every hole of the mesh (a cycle of border halfedges) by a fan of triangles from
-// the centroid of its vertices, appended to `triangles`; returns the number of holes. The
-// fan may self-intersect or cross the mesh: it is only rasterised, never used as a surface.
-template <typename FaceGraph, typename VertexPointMap>
-std::size_t close_holes(const FaceGraph& mesh, VertexPointMap vpm, std::vector<Triangle3>& triangles)
-{
-  using halfedge_descriptor = typename boost::graph_traits<FaceGraph>::halfedge_descriptor;
-  std::vector<halfedge_descriptor> border;
-  for(halfedge_descriptor h : halfedges(mesh))
-    if(is_border(h, mesh))
-      border.push_back(h);
-  std::sort(border.begin(), border.end());
-  std::vector<bool> done(border.size(), false);
-  auto position = [&](halfedge_descriptor h) {
-    return std::size_t(std::lower_bound(border.begin(), border.end(), h) - border.begin());
-  };
-  auto point = [&](halfedge_descriptor h) {
-    const auto& p = get(vpm, target(h, mesh));
-    return Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-  };
-  std::size_t holes = 0;
-  std::vector<Vec3> loop;
-  for(std::size_t start = 0; start < border.size(); ++start)
-  {
-    if(done[start])
-      continue;
-    loop.clear();
-    halfedge_descriptor h = border[start];
-    // Walk the cycle; a non-manifold border could revisit a halfedge: stop there.
-    for(std::size_t steps = 0; steps <= border.size(); ++steps)
-    {
-      const std::size_t i = position(h);
-      if(i >= border.size() || border[i] != h || done[i])
-        break;
-      done[i] = true;
-      loop.push_back(point(h));
-      h = next(h, mesh);
-    }
-    if(loop.size() < 3)
-      continue;
-    Vec3 centre{0., 0., 0.};
-    for(const Vec3& p : loop)
-      for(int c = 0; c < 3; ++c)
-        centre[c] += p[c] / double(loop.size());
-    for(std::size_t i = 0; i < loop.size(); ++i)
-      triangles.push_back(Triangle3{centre, loop[i], loop[(i + 1) % loop.size()]});
-    ++holes;
-  }
-  return holes;
-}
 
 // The frame and box of the grid: `resolution` voxels along the longest principal extent of
 // the mesh, the mesh centred in the box, and `margin` empty voxels all around.
@@ -150,16 +72,6 @@ inline Voxel_frame grid_frame(const std::vector<Triangle3>& triangles, int resol
   }
   box.min = Voxel_key{0, 0, 0};
   return Voxel_frame(origin, pf.axes, h);
-}
-
-// The triangles in grid coordinates (`frame.to_grid` of their corners).
-inline std::vector<Triangle3> to_grid(const std::vector<Triangle3>& triangles, const Voxel_frame& frame)
-{
-  std::vector<Triangle3> g(triangles.size());
-  for(std::size_t i = 0; i < triangles.size(); ++i)
-    for(int c = 0; c < 3; ++c)
-      g[i][c] = frame.to_grid(triangles[i][c]);
-  return g;
 }
 
 // Labels `label` every EMPTY voxel that one of the triangles [first, last) of `g` (in grid
@@ -269,8 +181,8 @@ inline void flood_outside(const Grid_layout& layout, std::vector<std::uint8_t>& 
 /// with 6-connectivity (which no closed surface lets through). The voxels the flood does
 /// not reach (the enclosed voxels and the marked surface voxels) make the solid by default;
 /// it contains the whole mesh and sticks out of it by up to a voxel, so parts closer than
-/// about a voxel merge (spurious tunnels). With `keep_surface_voxels(false)` they are
-/// peeled:
+/// about a voxel merge (spurious tunnels, which `cut_spurious_cycles()` opens again in the
+/// thinned skeleton). With `keep_surface_voxels(false)` they are peeled:
 /// - <i>Inside test.</i> The winding number of the surface around each voxel centre is
 ///   counted along the grid lines through the centres (signed crossings of the faces and
 ///   hole-filling fans before the centre, a line through a shared edge counting it once).

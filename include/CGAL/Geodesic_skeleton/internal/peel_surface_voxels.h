@@ -10,6 +10,7 @@
 
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
+#include <CGAL/Geodesic_skeleton/internal/grid_line_crossings.h>
 #include <CGAL/Geodesic_skeleton/internal/principal_frame.h>
 #include <CGAL/Geodesic_skeleton/internal/simple_point.h>
 
@@ -67,46 +68,22 @@ inline bool vote_along_lines(const std::vector<std::array<Vec3, 3>>& g, int axis
   crossings.reserve(g.size() * 2);
   for(const auto& t : g)
   {
-    const double u[3] = {t[0][b], t[1][b], t[2][b]}, v[3] = {t[0][c], t[1][c], t[2][c]};
-    const double area = (u[1] - u[0]) * (v[2] - v[0]) - (v[1] - v[0]) * (u[2] - u[0]);
-    if(area == 0 || !std::isfinite(area))
+    const Projected_triangle pt(t, axis);
+    if(!pt.crossable())
       continue;
+    const double* u = pt.u;
+    const double* v = pt.v;
     const int from_u = (std::max)(0, int(std::ceil((std::min)({u[0], u[1], u[2]}) - 0.5)));
     const int to_u = (std::min)(int(nb) - 1, int(std::floor((std::max)({u[0], u[1], u[2]}) - 0.5)));
     const int from_v = (std::max)(0, int(std::ceil((std::min)({v[0], v[1], v[2]}) - 0.5)));
     const int to_v = (std::min)(int(nc) - 1, int(std::floor((std::max)({v[0], v[1], v[2]}) - 0.5)));
-    if(from_u > to_u || from_v > to_v)
-      continue;
-    const double side = area > 0 ? 1. : -1.;
     for(int jv = from_v; jv <= to_v; ++jv)
       for(int ju = from_u; ju <= to_u; ++ju)
       {
-        const double pu = ju + 0.5, pv = jv + 0.5;
-        double w[3];
-        bool in = true;
-        for(int e = 0; e < 3 && in; ++e)
-        {
-          // Edge from corner e+1 to e+2, weight of corner e; computed from the edge's
-          // lexicographically smaller end so that both triangles of an edge agree.
-          const int p = (e + 1) % 3, q = (e + 2) % 3;
-          const bool forward = u[p] < u[q] || (u[p] == u[q] && v[p] < v[q]);
-          const int s = forward ? p : q, r = forward ? q : p;
-          const double f = (u[r] - u[s]) * (pv - v[s]) - (v[r] - v[s]) * (pu - u[s]);
-          const double oriented = forward ? f : -f; // edge p -> q
-          w[e] = oriented * side;
-          if(w[e] < 0)
-            in = false;
-          else if(w[e] == 0)
-            in = (forward ? 1. : -1.) * side > 0; // the triangle left of the s -> r edge
-        }
-        if(!in)
-          continue;
-        const double sum = w[0] + w[1] + w[2];
-        if(!(sum > 0))
-          continue;
-        const double at = (w[0] * t[0][axis] + w[1] * t[1][axis] + w[2] * t[2][axis]) / sum;
-        crossings.push_back(Line_crossing{std::uint32_t(std::size_t(jv) * nb + std::size_t(ju)),
-                                          float(at), std::int8_t(area > 0 ? 1 : -1)});
+        double at;
+        if(pt.crossing(ju + 0.5, jv + 0.5, at))
+          crossings.push_back(Line_crossing{std::uint32_t(std::size_t(jv) * nb + std::size_t(ju)),
+                                            float(at), std::int8_t(pt.sign())});
       }
   }
   // Bucket the crossings by line (counting sort), then order each line's crossings.

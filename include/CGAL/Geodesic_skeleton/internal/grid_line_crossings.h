@@ -1,0 +1,356 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_GEODESIC_SKELETON_INTERNAL_GRID_LINE_CROSSINGS_H
+#define CGAL_GEODESIC_SKELETON_INTERNAL_GRID_LINE_CROSSINGS_H
+
+// Inside or outside a triangle soup, by counting its signed crossings along lines parallel
+// to the axes of the voxel grid (the soup is in grid coordinates). A line whose crossings do
+// not sum to zero (it passes through a gap of an open surface, or meets a flipped face)
+// cannot tell, and another axis is tried. Crossings of many lines are found at once: the
+// lines are bucketed by grid cell and each triangle visits the cells it covers, so the cost
+// is O(F + L + C) for F triangles, L lines and C crossings (plus the cells covered).
+
+#include <CGAL/Geodesic_skeleton/internal/principal_frame.h>
+
+#include <algorithm>
+#include <array>
+#include <climits>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Geodesic_skeleton {
+namespace internal {
+
+// A triangle seen along grid axis `axis`: its corners in the two other coordinates (u, v),
+// taken in cyclic order so that (u, v, axis) is right-handed, and along the axis (a).
+struct Projected_triangle
+{
+  double u[3], v[3], a[3];
+  double area; // twice the signed area in (u, v): positive when the normal points along +axis
+  double u_min, u_max, v_min, v_max;
+
+  Projected_triangle(const Triangle3& t, int axis)
+  {
+    const int b = (axis + 1) % 3, c = (axis + 2) % 3;
+    for(int k = 0; k < 3; ++k)
+    {
+      u[k] = t[k][b];
+      v[k] = t[k][c];
+      a[k] = t[k][axis];
+    }
+    area = (u[1] - u[0]) * (v[2] - v[0]) - (v[1] - v[0]) * (u[2] - u[0]);
+    u_min = (std::min)({u[0], u[1], u[2]});
+    u_max = (std::max)({u[0], u[1], u[2]});
+    v_min = (std::min)({v[0], v[1], v[2]});
+    v_max = (std::max)({v[0], v[1], v[2]});
+  }
+
+  // False for a triangle seen edge-on (or with a non-finite corner): no line crosses it once.
+  bool crossable() const { return area != 0 && std::isfinite(area); }
+  int sign() const { return area > 0 ? 1 : -1; }
+
+  // Whether the line through (pu, pv) crosses the triangle, and where along the axis. A line
+  // through an edge shared by two triangles crosses exactly one of them: each edge function
+  // is computed from the edge's lexicographically smaller end, so both triangles get the
+  // same value, and a zero goes to the triangle on the left of that direction.
+  bool crossing(double pu, double pv, double& at) const
+  {
+    if(pu < u_min || pu > u_max || pv < v_min || pv > v_max)
+      return false; // most lines that reach the edge functions would miss: a cheap test first
+    const double side = area > 0 ? 1. : -1.;
+    double w[3];
+    for(int e = 0; e < 3; ++e)
+    {
+      const int p = (e + 1) % 3, q = (e + 2) % 3; // edge p -> q, weight of corner e
+      const bool forward = u[p] < u[q] || (u[p] == u[q] && v[p] < v[q]);
+      const int s = forward ? p : q, r = forward ? q : p;
+      const double f = (u[r] - u[s]) * (pv - v[s]) - (v[r] - v[s]) * (pu - u[s]);
+      w[e] = (forward ? f : -f) * side;
+      if(w[e] < 0)
+        return false;
+      if(w[e] == 0 && !((forward ? 1. : -1.) * side > 0))
+        return false;
+    }
+    const double sum = w[0] + w[1] + w[2];
+    if(!(sum > 0))
+      return false;
+    at = (w[0] * a[0] + w[1] * a[1] + w[2] * a[2]) / sum;
+    return true;
+  }
+};
+
+// floor() for coordinates of a grid (finite, far below 2^62), without a library call.
+inline long floor_to_long(double x)
+{
+  const long i = long(x);
+  return i - long(x < double(i));
+}
+
+// A crossing of a line: where along it, and +1 or -1 by the side the triangle faces.
+struct Line_hit
+{
+  double at;
+  int sign;
+};
+
+// A triangle soup (grid coordinates) ready for the crossings of lines parallel to the grid
+// axes: per axis, the triangles that cover each cell (a voxel wide) of the two other
+// coordinates
+// (compressed rows), built on first use, so that a line visits only the triangles of its
+// cell. Building an axis costs O(F + cells covered); a line costs O(triangles of its cell).
+class Grid_line_crossings
+{
+public:
+  explicit Grid_line_crossings(std::vector<Triangle3> g) : m_g(std::move(g))
+  {
+    for(const Triangle3& t : m_g)
+      for(const Vec3& p : t)
+        for(int d = 0; d < 3; ++d)
+          if(std::isfinite(p[d]))
+          {
+            m_lo[d] = (std::min)(m_lo[d], floor_to_long(cell_scale * p[d]));
+            m_hi[d] = (std::max)(m_hi[d], floor_to_long(cell_scale * p[d]));
+          }
+  }
+
+  // The crossings of each line (u, v) parallel to `axis`, sorted along the line.
+  std::vector<std::vector<Line_hit>> crossings(int axis, const std::vector<std::array<double, 2>>& lines)
+  {
+    std::vector<std::vector<Line_hit>> hits(lines.size());
+    if(m_g.empty() || m_lo[0] > m_hi[0])
+      return hits;
+    const Cells& cells = cells_of(axis);
+    for(std::size_t i = 0; i < lines.size(); ++i)
+    {
+      const double cu = double(floor_to_long(cell_scale * lines[i][0]) - cells.lo_u);
+      const double cv = double(floor_to_long(cell_scale * lines[i][1]) - cells.lo_v);
+      if(!(cu >= 0 && cv >= 0 && cu < double(cells.nu) && cv < double(cells.nv)))
+        continue;
+      const std::size_t cell = std::size_t(cv) * cells.nu + std::size_t(cu);
+      const double pu = lines[i][0], pv = lines[i][1];
+      for(std::uint32_t k = cells.start[cell]; k < cells.start[cell + 1]; ++k)
+      {
+        // Triangles are small next to a cell: most miss the line, which their box tells.
+        const auto& box = cells.boxes[k];
+        if(pu < box[0] || pu > box[1] || pv < box[2] || pv > box[3])
+          continue;
+        const Projected_triangle pt(m_g[cells.triangles[k]], axis);
+        double at;
+        if(pt.crossing(pu, pv, at))
+          hits[i].push_back(Line_hit{at, pt.sign()});
+      }
+      std::sort(hits[i].begin(), hits[i].end(), [](const Line_hit& x, const Line_hit& y) { return x.at < y.at; });
+    }
+    return hits;
+  }
+
+private:
+  // Cells per voxel along each axis. Finer cells make each line test fewer triangles but
+  // each triangle cover more cells; at the resolutions the package uses, triangles are about
+  // a voxel wide, and one cell per voxel builds fastest.
+  static constexpr double cell_scale = 1.;
+
+  struct Cells
+  {
+    bool built = false;
+    long lo_u = 0, lo_v = 0;
+    std::size_t nu = 0, nv = 0;
+    std::vector<std::uint32_t> start, triangles;
+    std::vector<std::array<double, 4>> boxes; // of each triangle listed: u min, u max, v min, v max
+  };
+
+  const Cells& cells_of(int axis)
+  {
+    Cells& cells = m_cells[axis];
+    if(cells.built)
+      return cells;
+    cells.built = true;
+    const int b = (axis + 1) % 3, c = (axis + 2) % 3;
+    cells.lo_u = m_lo[b];
+    cells.lo_v = m_lo[c];
+    cells.nu = std::size_t(m_hi[b] - m_lo[b] + 1);
+    cells.nv = std::size_t(m_hi[c] - m_lo[c] + 1);
+    // The (cell, triangle) pairs of the footprints, then a counting sort by cell.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    pairs.reserve(4 * m_g.size());
+    for(std::size_t t = 0; t < m_g.size(); ++t)
+    {
+      const Triangle3& p = m_g[t];
+      const long u0 = floor_to_long(cell_scale * (std::min)({p[0][b], p[1][b], p[2][b]})) - cells.lo_u;
+      const long u1 = floor_to_long(cell_scale * (std::max)({p[0][b], p[1][b], p[2][b]})) - cells.lo_u;
+      const long v0 = floor_to_long(cell_scale * (std::min)({p[0][c], p[1][c], p[2][c]})) - cells.lo_v;
+      const long v1 = floor_to_long(cell_scale * (std::max)({p[0][c], p[1][c], p[2][c]})) - cells.lo_v;
+      for(long v = v0; v <= v1; ++v)
+        for(long u = u0; u <= u1; ++u)
+          pairs.emplace_back(std::uint32_t(std::size_t(v) * cells.nu + std::size_t(u)), std::uint32_t(t));
+    }
+    cells.start.assign(cells.nu * cells.nv + 1, 0);
+    for(const auto& pr : pairs)
+      ++cells.start[pr.first + 1];
+    for(std::size_t k = 1; k < cells.start.size(); ++k)
+      cells.start[k] += cells.start[k - 1];
+    cells.triangles.resize(pairs.size());
+    cells.boxes.resize(pairs.size());
+    std::vector<std::uint32_t> fill(cells.start.begin(), cells.start.end() - 1);
+    for(const auto& pr : pairs)
+    {
+      const Triangle3& p = m_g[pr.second];
+      const std::uint32_t k = fill[pr.first]++;
+      cells.triangles[k] = pr.second;
+      cells.boxes[k] = {(std::min)({p[0][b], p[1][b], p[2][b]}), (std::max)({p[0][b], p[1][b], p[2][b]}),
+                        (std::min)({p[0][c], p[1][c], p[2][c]}), (std::max)({p[0][c], p[1][c], p[2][c]})};
+    }
+    return cells;
+  }
+
+  std::vector<Triangle3> m_g;
+  long m_lo[3] = {LONG_MAX, LONG_MAX, LONG_MAX}, m_hi[3] = {LONG_MIN, LONG_MIN, LONG_MIN};
+  Cells m_cells[3];
+};
+
+// Whether the crossings of a line sum to zero: then the winding number is well defined
+// along it (zero at both ends).
+inline bool is_balanced(const std::vector<Line_hit>& hits)
+{
+  int total = 0;
+  for(const Line_hit& h : hits)
+    total += h.sign;
+  return total == 0;
+}
+
+// The winding number of the surface around the point at `at` of a balanced line.
+inline int winding_before(const std::vector<Line_hit>& hits, double at)
+{
+  int winding = 0;
+  for(const Line_hit& h : hits)
+  {
+    if(!(h.at < at))
+      break;
+    winding += h.sign;
+  }
+  return winding;
+}
+
+enum class Point_side : std::uint8_t { outside, inside, undecided };
+
+// Where each point (grid coordinates) lies: inside the surface `g` where its winding number
+// is not zero, of either sign (so overlapping parts and inverted components are inside),
+// along the first axis whose line through the point is balanced; undecided where no line
+// is (a point in line with gaps of an open surface along all three axes).
+inline std::vector<Point_side> sides_of_points(Grid_line_crossings& g, const std::vector<Vec3>& points)
+{
+  std::vector<Point_side> side(points.size(), Point_side::undecided);
+  std::vector<std::size_t> pending(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+    pending[i] = i;
+  for(int axis = 0; axis < 3 && !pending.empty(); ++axis)
+  {
+    const int b = (axis + 1) % 3, c = (axis + 2) % 3;
+    std::vector<std::array<double, 2>> lines;
+    lines.reserve(pending.size());
+    for(std::size_t i : pending)
+      lines.push_back({points[i][b], points[i][c]});
+    const auto hits = g.crossings(axis, lines);
+    std::vector<std::size_t> still;
+    for(std::size_t k = 0; k < pending.size(); ++k)
+    {
+      if(!is_balanced(hits[k]))
+      {
+        still.push_back(pending[k]);
+        continue;
+      }
+      const std::size_t i = pending[k];
+      side[i] = winding_before(hits[k], points[i][axis]) != 0 ? Point_side::inside : Point_side::outside;
+    }
+    pending.swap(still);
+  }
+  return side;
+}
+
+// How inside_points_in_cubes() chooses among the inside pieces of its lines.
+enum class Inside_piece_choice { longest, nearest };
+
+// For each cube of centre `centres[i]` (grid coordinates) and half-width `half_width`
+// (voxels): a point inside the surface `g` and in the cube, found on the lines along the
+// three axes through the points of the cube's cross-section at multiples of 1/3 voxel from
+// its centre (3 x 3 lines per axis in a voxel, 9 x 9 in a cube of three voxels). Among the
+// pieces of these (balanced) lines that are both in the cube and inside the surface, the
+// midpoint of the longest (the deepest point in the thinnest direction the lines sample),
+// or the midpoint nearest the centre. The axes are tried in turn, the next one only for the
+// cubes where the lines so far found nothing (or, for the longest, only pieces shorter than
+// 1/3 voxel). `found[i]` is false where no line has such a piece
+// (the surface only grazes the cube, or is thinner than the lines' spacing there).
+inline std::vector<Vec3> inside_points_in_cubes(Grid_line_crossings& g, const std::vector<Vec3>& centres,
+                                                double half_width, Inside_piece_choice choice,
+                                                std::vector<bool>& found)
+{
+  std::vector<double> offsets;
+  for(int k = -int(std::ceil(3 * half_width)); k <= int(std::ceil(3 * half_width)); ++k)
+    if(std::abs(k / 3.) < half_width)
+      offsets.push_back(k / 3.);
+  const std::size_t per_cube = offsets.size() * offsets.size();
+  std::vector<Vec3> best_point(centres);
+  std::vector<double> best_score(centres.size(), -HUGE_VAL);
+  found.assign(centres.size(), false);
+  std::vector<std::size_t> pending(centres.size());
+  for(std::size_t i = 0; i < centres.size(); ++i)
+    pending[i] = i;
+  for(int axis = 0; axis < 3 && !pending.empty(); ++axis)
+  {
+    const int b = (axis + 1) % 3, c = (axis + 2) % 3;
+    std::vector<std::array<double, 2>> lines;
+    lines.reserve(per_cube * pending.size());
+    for(std::size_t i : pending)
+      for(double dv : offsets)
+        for(double du : offsets)
+          lines.push_back({centres[i][b] + du, centres[i][c] + dv});
+    const auto hits = g.crossings(axis, lines);
+    for(std::size_t l = 0; l < lines.size(); ++l)
+    {
+      if(hits[l].empty() || !is_balanced(hits[l]))
+        continue;
+      const std::size_t i = pending[l / per_cube];
+      const double from = centres[i][axis] - half_width, to = centres[i][axis] + half_width;
+      int winding = 0;
+      for(std::size_t k = 0; k + 1 < hits[l].size(); ++k)
+      {
+        winding += hits[l][k].sign;
+        const double piece_from = (std::max)(from, hits[l][k].at);
+        const double piece_to = (std::min)(to, hits[l][k + 1].at);
+        if(winding == 0 || !(piece_to > piece_from))
+          continue;
+        Vec3 q;
+        q[axis] = 0.5 * (piece_from + piece_to);
+        q[b] = lines[l][0];
+        q[c] = lines[l][1];
+        const double score = choice == Inside_piece_choice::longest ? piece_to - piece_from
+                                                                   : -norm3(sub(q, centres[i]));
+        if(score > best_score[i])
+        {
+          best_score[i] = score;
+          best_point[i] = q;
+          found[i] = true;
+        }
+      }
+    }
+    // The other axes only for the cubes where this one found nothing, or (choosing the
+    // longest piece) only a piece shorter than the lines' spacing: a part seen edge-on.
+    std::vector<std::size_t> still;
+    for(std::size_t i : pending)
+      if(!found[i] || (choice == Inside_piece_choice::longest && best_score[i] < 1. / 3))
+        still.push_back(i);
+    pending.swap(still);
+  }
+  return best_point;
+}
+
+} // namespace internal
+} // namespace Geodesic_skeleton
+} // namespace CGAL
+
+#endif // CGAL_GEODESIC_SKELETON_INTERNAL_GRID_LINE_CROSSINGS_H

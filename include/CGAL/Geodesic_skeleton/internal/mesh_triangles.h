@@ -1,0 +1,162 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_GEODESIC_SKELETON_INTERNAL_MESH_TRIANGLES_H
+#define CGAL_GEODESIC_SKELETON_INTERNAL_MESH_TRIANGLES_H
+
+// A mesh as a soup of triangles in double precision, with its holes closed by fans, as the
+// voxel stages see it (voxelize() rasterises it; to_graph() and cut_spurious_cycles()
+// count its crossings along grid lines).
+
+#include <CGAL/Geodesic_skeleton/Voxel_frame.h>
+#include <CGAL/Geodesic_skeleton/internal/grid_line_crossings.h>
+#include <CGAL/Geodesic_skeleton/internal/principal_frame.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Geodesic_skeleton {
+namespace internal {
+
+// The triangles of the faces of `mesh` (a face with more than three vertices is split into
+// a fan), with finite coordinates checked.
+template <typename FaceGraph, typename VertexPointMap>
+std::vector<Triangle3> mesh_triangles(const FaceGraph& mesh, VertexPointMap vpm, const char* caller)
+{
+  std::vector<Triangle3> triangles;
+  triangles.reserve(static_cast<std::size_t>(num_faces(mesh)));
+  std::vector<Vec3> corners;
+  for(auto f : faces(mesh))
+  {
+    corners.clear();
+    for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+    {
+      const auto& p = get(vpm, v);
+      const Vec3 q{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+      if(!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
+        throw std::invalid_argument(std::string(caller) +
+                                    ": a vertex has a non-finite coordinate (NaN or infinite)");
+      corners.push_back(q);
+    }
+    for(std::size_t i = 1; i + 1 < corners.size(); ++i)
+      triangles.push_back(Triangle3{corners[0], corners[i], corners[i + 1]});
+  }
+  if(triangles.empty())
+    throw std::invalid_argument(std::string(caller) + ": the mesh has no faces");
+  return triangles;
+}
+
+// Closes every hole of the mesh (a cycle of border halfedges) by a fan of triangles from
+// the centroid of its vertices, appended to `triangles`; returns the number of holes. The
+// fan may self-intersect or cross the mesh: it is only rasterised, never used as a surface.
+template <typename FaceGraph, typename VertexPointMap>
+std::size_t close_holes(const FaceGraph& mesh, VertexPointMap vpm, std::vector<Triangle3>& triangles)
+{
+  using halfedge_descriptor = typename boost::graph_traits<FaceGraph>::halfedge_descriptor;
+  std::vector<halfedge_descriptor> border;
+  for(halfedge_descriptor h : halfedges(mesh))
+    if(is_border(h, mesh))
+      border.push_back(h);
+  std::sort(border.begin(), border.end());
+  std::vector<bool> done(border.size(), false);
+  auto position = [&](halfedge_descriptor h) {
+    return std::size_t(std::lower_bound(border.begin(), border.end(), h) - border.begin());
+  };
+  auto point = [&](halfedge_descriptor h) {
+    const auto& p = get(vpm, target(h, mesh));
+    return Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+  };
+  std::size_t holes = 0;
+  std::vector<Vec3> loop;
+  for(std::size_t start = 0; start < border.size(); ++start)
+  {
+    if(done[start])
+      continue;
+    loop.clear();
+    halfedge_descriptor h = border[start];
+    // Walk the cycle; a non-manifold border could revisit a halfedge: stop there.
+    for(std::size_t steps = 0; steps <= border.size(); ++steps)
+    {
+      const std::size_t i = position(h);
+      if(i >= border.size() || border[i] != h || done[i])
+        break;
+      done[i] = true;
+      loop.push_back(point(h));
+      h = next(h, mesh);
+    }
+    if(loop.size() < 3)
+      continue;
+    Vec3 centre{0., 0., 0.};
+    for(const Vec3& p : loop)
+      for(int c = 0; c < 3; ++c)
+        centre[c] += p[c] / double(loop.size());
+    for(std::size_t i = 0; i < loop.size(); ++i)
+      triangles.push_back(Triangle3{centre, loop[i], loop[(i + 1) % loop.size()]});
+    ++holes;
+  }
+  return holes;
+}
+
+// The triangles in grid coordinates (`frame.to_grid` of their corners).
+inline std::vector<Triangle3> to_grid(const std::vector<Triangle3>& triangles, const Voxel_frame& frame)
+{
+  std::vector<Triangle3> g(triangles.size());
+  for(std::size_t i = 0; i < triangles.size(); ++i)
+    for(int c = 0; c < 3; ++c)
+      g[i][c] = frame.to_grid(triangles[i][c]);
+  return g;
+}
+
+// The faces of `mesh` (and, with `fill_holes`, the fans that close its holes) in the grid
+// coordinates of `frame`, ready for inside tests along grid lines.
+template <typename FaceGraph, typename VertexPointMap>
+Grid_line_crossings mesh_grid_lines(const FaceGraph& mesh, VertexPointMap vpm, const Voxel_frame& frame,
+                                    bool fill_holes, const char* caller)
+{
+  std::vector<Triangle3> triangles = mesh_triangles(mesh, vpm, caller);
+  if(fill_holes)
+    close_holes(mesh, vpm, triangles);
+  return Grid_line_crossings(to_grid(triangles, frame));
+}
+
+// mesh_grid_lines(), built on first use: the stages that need inside tests only sometimes
+// (cut_spurious_cycles()) pay nothing otherwise, and the stages of the pipeline share it.
+template <typename FaceGraph, typename VertexPointMap>
+class Lazy_mesh_grid_lines
+{
+public:
+  Lazy_mesh_grid_lines(const FaceGraph& mesh, VertexPointMap vpm, const Voxel_frame& frame, bool fill_holes,
+                       const char* caller)
+    : m_mesh(mesh), m_vpm(vpm), m_frame(frame), m_fill_holes(fill_holes), m_caller(caller)
+  {}
+  Grid_line_crossings& operator()()
+  {
+    if(!m_lines)
+      m_lines.emplace(mesh_grid_lines(m_mesh, m_vpm, m_frame, m_fill_holes, m_caller));
+    return *m_lines;
+  }
+
+private:
+  const FaceGraph& m_mesh;
+  VertexPointMap m_vpm;
+  Voxel_frame m_frame;
+  bool m_fill_holes;
+  const char* m_caller;
+  std::optional<Grid_line_crossings> m_lines;
+};
+
+} // namespace internal
+} // namespace Geodesic_skeleton
+} // namespace CGAL
+
+#endif // CGAL_GEODESIC_SKELETON_INTERNAL_MESH_TRIANGLES_H

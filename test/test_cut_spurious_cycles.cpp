@@ -1,0 +1,127 @@
+// Specification of CGAL/Geodesic_skeleton/cut_spurious_cycles.h.
+#include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
+#include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>
+#include <CGAL/Geodesic_skeleton/to_graph.h>
+
+#include <Geodesic_skeleton_test/shapes.h>
+#include <Geodesic_skeleton_test/voxel_skeleton.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include <string>
+
+namespace gs = CGAL::Geodesic_skeleton;
+namespace test = Geodesic_skeleton_test;
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+
+// The thinned skeleton of a mesh before and after cut_spurious_cycles().
+struct Cut_result
+{
+  long cycles_before = 0, cycles_after = 0;
+  int components_before = 0, components_after = 0;
+  std::size_t reported = 0;
+};
+
+Cut_result cut(const Mesh& mesh, int resolution)
+{
+  test::Voxel_pipeline<Mesh, gs::Sparse_voxel_set> p(mesh, resolution);
+  Cut_result r;
+  r.cycles_before = test::graph_cycles(p.graph);
+  r.components_before = test::graph_components(p.graph);
+  r.reported = gs::cut_spurious_cycles(p.voxels, mesh);
+  decltype(p.graph) after;
+  gs::to_graph(p.voxels, p.distances, mesh, after);
+  r.cycles_after = test::graph_cycles(after);
+  r.components_after = test::graph_components(after);
+  return r;
+}
+
+// A horseshoe of five overlapping boxes (two pillars, a bar on top, a foot under each
+// pillar) whose feet end `gap` apart, in the plane y = [0, 1]; the shape spans 6 units.
+Mesh horseshoe(double gap)
+{
+  test::Soup s = test::box(0, 0, 0, 1, 1, 6);
+  test::append(s, test::box(5, 0, 0, 6, 1, 6));
+  test::append(s, test::box(0, 0, 5, 6, 1, 6));
+  test::append(s, test::box(0.5, 0, 0, 3 - gap / 2, 1, 1));
+  test::append(s, test::box(3 + gap / 2, 0, 0, 5.5, 1, 1));
+  return test::mesh_of<Mesh>(s);
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(cut_spurious_cycles)
+
+BOOST_AUTO_TEST_CASE(a_gap_narrower_than_a_voxel_makes_a_cycle_that_is_cut)
+{
+  // At resolution 32 a voxel is 6/32 = 0.19 units: a gap of 0.05 is bridged by the solid.
+  const Cut_result r = cut(horseshoe(0.05), 32);
+  BOOST_TEST(r.cycles_before == 1);
+  BOOST_TEST(r.reported == 1u);
+  BOOST_TEST(r.cycles_after == 0);
+  BOOST_TEST(r.components_after == 1);
+}
+
+BOOST_AUTO_TEST_CASE(a_ring_of_overlapping_parts_keeps_its_cycle)
+{
+  // The same parts with overlapping feet: a real ring, although every part has genus 0.
+  const Cut_result r = cut(horseshoe(-0.5), 32);
+  BOOST_TEST(r.cycles_before == 1);
+  BOOST_TEST(r.reported == 0u);
+  BOOST_TEST(r.cycles_after == 1);
+}
+
+BOOST_AUTO_TEST_CASE(a_gap_wider_than_a_voxel_makes_no_cycle)
+{
+  const Cut_result r = cut(horseshoe(1.0), 32);
+  BOOST_TEST(r.cycles_before == 0);
+  BOOST_TEST(r.reported == 0u);
+  BOOST_TEST(r.cycles_after == 0);
+}
+
+BOOST_AUTO_TEST_CASE(real_handles_are_kept)
+{
+  // eight.off and the double torus have genus 2, elephant.off genus 3.
+  for(const auto& [name, genus] : {std::pair<std::string, long>{"eight.off", 2},
+                                   {"double-torus-example.off", 2}, {"elephant.off", 3}})
+  {
+    const Cut_result r = cut(test::demo_mesh<Mesh>(name), 64);
+    BOOST_TEST(r.cycles_before == genus, name);
+    BOOST_TEST(r.reported == 0u, name);
+    BOOST_TEST(r.cycles_after == genus, name);
+  }
+  BOOST_TEST(gs::internal::capped_genus_sum(test::mesh_of<Mesh>(test::torus(2, 0.5, 24, 12))) == 1u);
+}
+
+BOOST_AUTO_TEST_CASE(near_contacts_of_demo_characters_are_opened)
+{
+  // At resolution 64 these genus-0 characters have parts within a voxel of each other
+  // (hand on thigh, legs, fingers), which the conservative solid joins.
+  for(const char* name : {"man.off", "homer.off", "bear.off", "hand.off"})
+  {
+    const Mesh mesh = test::demo_mesh<Mesh>(name);
+    BOOST_TEST(gs::internal::capped_genus_sum(mesh) == 0u, name);
+    const Cut_result r = cut(mesh, 64);
+    BOOST_TEST_MESSAGE(name << ": " << r.cycles_before << " cycles after thinning, " << r.reported << " cut");
+    BOOST_TEST(r.cycles_before > 0, name);
+    BOOST_TEST(r.cycles_after == 0, name);
+    BOOST_TEST(long(r.reported) == r.cycles_before, name);
+    BOOST_TEST(r.components_after == r.components_before, name);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(an_empty_skeleton_or_mesh_cuts_nothing)
+{
+  gs::Sparse_voxel_set empty;
+  BOOST_TEST(gs::cut_spurious_cycles(empty, test::mesh_of<Mesh>(test::box(0, 0, 0, 1, 1, 1))) == 0u);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
