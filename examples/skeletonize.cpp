@@ -9,11 +9,7 @@
 #include <CGAL/Geodesic_skeleton.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
-#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -22,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -31,6 +28,7 @@
 
 namespace gs = CGAL::Geodesic_skeleton;
 namespace params = CGAL::Geodesic_skeleton::parameters;
+namespace ranges = CGAL::Geodesic_skeleton::parameter_ranges;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -46,21 +44,48 @@ struct Usage_error : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
+// The defaults and valid ranges are the library's (CGAL/Geodesic_skeleton/parameter_ranges.h).
 struct Options
 {
   std::string input, output, svg, svg_stage = "control";
   int resolution = gs::default_voxel_resolution;
-  double spur_length_factor = 1.2;
-  int smoothing_window = 5;
-  double bend_threshold = 0.08;
-  double straightness_tolerance = 0.5;
-  double minimum_bone_length_factor = 2.0;
-  std::size_t reeb_intervals = 30;
+  double spur_length_factor = ranges::spur_length_factor.default_value;
+  int smoothing_window = static_cast<int>(ranges::smoothing_window.default_value);
+  double bend_threshold = ranges::bend_threshold.default_value;
+  double straightness_tolerance = ranges::straightness_tolerance.default_value;
+  double minimum_bone_length_factor = ranges::minimum_bone_length_factor.default_value;
+  std::size_t reeb_intervals = static_cast<std::size_t>(ranges::number_of_reeb_intervals.default_value);
   bool fill_holes = true;
   bool keep_surface_voxels = true;
 };
 
-const char* const usage_text = R"(usage: skeletonize INPUT_MESH [-o OUT] [--resolution N] [--svg PREVIEW.svg] [options]
+// The numeric options: option, library range, the words of --help.
+struct Numeric_option
+{
+  const char* option;
+  const char* metavar;
+  const gs::Parameter_range& range;
+  const char* help;
+};
+const Numeric_option numeric_options[] = {
+    {"--resolution", "N", ranges::resolution, "voxels along the longest principal axis"},
+    {"--spur-length", "F", ranges::spur_length_factor, "snip end branches shorter than F MAT radii"},
+    {"--smoothing-window", "W", ranges::smoothing_window, "points averaged along branches"},
+    {"--bend-threshold", "T", ranges::bend_threshold, "chord-to-point accumulation that makes a joint"},
+    {"--straightness", "S", ranges::straightness_tolerance, "allowed bone deviation in MAT radii"},
+    {"--min-bone-length", "F", ranges::minimum_bone_length_factor, "shortest bone in MAT radii"},
+    {"--reeb-intervals", "N", ranges::number_of_reeb_intervals, "intervals of the Reeb graph reported for comparison"},
+};
+
+const Numeric_option& numeric_option(const std::string& option)
+{
+  for(const Numeric_option& o : numeric_options)
+    if(option == o.option)
+      return o;
+  throw std::logic_error("no numeric option " + option);
+}
+
+const char* const usage_head = R"(usage: skeletonize INPUT_MESH [-o OUT] [--resolution N] [--svg PREVIEW.svg] [options]
 
 Extracts the animation control skeleton of a triangle mesh (any format that CGAL reads:
 OFF, OBJ, PLY, STL, ...). Without -o, writes the JSON report to standard output.
@@ -71,27 +96,42 @@ OFF, OBJ, PLY, STL, ...). Without -o, writes the JSON report to standard output.
   --svg PREVIEW.svg          also draw the mesh and its control skeleton in three views
   --svg-stage STAGE          what the picture shows: control (default), pruned (the smoothed
                              curve skeleton), thinned (the curve skeleton after thinning), reeb
-  --resolution N             voxels along the longest principal axis, 4..8192 (default 64)
   --no-fill-holes            do not close the mesh's holes before voxelizing
   --peel-surface-voxels      drop the surface voxels whose centre is outside the mesh (opens
                              false loops between parts that nearly touch; default: kept)
-  --spur-length F            snip end branches shorter than F MAT radii, 0..100 (default 1.2)
-  --smoothing-window W       points averaged along branches, odd, 1..1001 (default 5)
-  --bend-threshold T         chord-to-point accumulation that makes a joint, 0..1 (default 0.08)
-  --straightness S           allowed bone deviation in MAT radii, 0..100 (default 0.5)
-  --min-bone-length F        shortest bone in MAT radii, 0..1000 (default 2)
-  --reeb-intervals N         intervals of the Reeb graph reported for comparison, 1..1000000 (default 30)
-  -h, --help                 show this help
 )";
 
+std::string usage_text()
+{
+  std::ostringstream text;
+  text << usage_head;
+  for(const Numeric_option& o : numeric_options)
+    text << "  " << std::left << std::setw(27) << (std::string(o.option) + " " + o.metavar) << o.help << ",\n"
+         << std::setw(29) << "" << o.range.valid_values() << " (default " << o.range.default_value << ")\n";
+  text << "  -h, --help                 show this help\n";
+  return text.str();
+}
+
+// The value of a numeric option, checked against the library's range of its parameter, so
+// that a bad value fails before the mesh is read, naming the option and its range.
 template <typename T>
 T parse_number(const std::string& option, const std::string& text)
 {
+  const Numeric_option& o = numeric_option(option);
   std::istringstream in(text);
-  T value;
+  double value;
   if(!(in >> value) || !in.eof())
-    throw Usage_error("option " + option + " needs a number, got '" + text + "'");
-  return value;
+  {
+    // istream cannot read "nan" or "inf": name them as out of range, not as unreadable.
+    if(text == "nan" || text == "NaN" || text == "inf" || text == "-inf")
+      value = text == "-inf" ? -HUGE_VAL : text == "inf" ? HUGE_VAL : std::nan("");
+    else
+      throw Usage_error("option " + option + " needs a number, got '" + text + "'");
+  }
+  if(!o.range.contains(value))
+    throw Usage_error("option " + option + " (" + o.range.name + ") must be " + o.range.valid_values() +
+                      ", got " + text);
+  return static_cast<T>(value);
 }
 
 Options parse_options(int argc, char** argv)
@@ -108,7 +148,7 @@ Options parse_options(int argc, char** argv)
     };
     if(a == "-h" || a == "--help")
     {
-      std::cout << usage_text;
+      std::cout << usage_text();
       std::exit(0);
     }
     else if(a == "-o" || a == "--output") o.output = value();
@@ -139,33 +179,19 @@ bool ends_with(const std::string& s, const std::string& suffix)
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-// Reads any mesh CGAL reads. A file that is not a clean manifold (as artists' meshes often
-// are) is read as a polygon soup, repaired, oriented and turned into a mesh.
+// Reads any mesh CGAL reads (a file that is not a clean manifold is repaired); the
+// library's reader names the file and the problem.
 Mesh read_mesh(const std::string& path)
 {
-  std::ifstream probe(path);
-  if(!probe)
-    throw Usage_error(path + ": cannot open the file");
   Mesh mesh;
-  if(CGAL::IO::read_polygon_mesh(path, mesh) && !is_empty(mesh))
-    return mesh;
-  std::vector<Point> points;
-  std::vector<std::vector<std::size_t>> polygons;
-  if(!CGAL::IO::read_polygon_soup(path, points, polygons))
-    throw Usage_error(path + ": the file cannot be parsed as a mesh (OFF, OBJ, PLY, STL, ...)");
-  for(const Point& p : points)
-    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-      throw Usage_error(path + ": a vertex has a non-finite coordinate (NaN or infinite)");
-  for(const auto& polygon : polygons)
-    for(std::size_t i : polygon)
-      if(i >= points.size())
-        throw Usage_error(path + ": a face refers to a vertex that does not exist");
-  PMP::repair_polygon_soup(points, polygons);
-  PMP::orient_polygon_soup(points, polygons);
-  mesh.clear();
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-  if(num_faces(mesh) == 0)
-    throw Usage_error(path + ": the mesh has no faces");
+  try
+  {
+    gs::IO::read_mesh(path, mesh);
+  }
+  catch(const std::runtime_error& e)
+  {
+    throw Usage_error(e.what());
+  }
   return mesh;
 }
 

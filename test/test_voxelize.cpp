@@ -202,8 +202,8 @@ BOOST_AUTO_TEST_CASE(bad_input_is_a_clear_error)
   BOOST_TEST(throws_with<std::invalid_argument>([&] { gs::voxelize(mesh_of(sheet), s); }, "encloses no volume"));
 
   const Mesh cube = mesh_of(test::box(0, 0, 0, 1, 1, 1));
-  BOOST_TEST(throws_with<std::invalid_argument>([&] { gs::voxelize(cube, s, gs::parameters::resolution(3)); }, "out of range"));
-  BOOST_TEST(throws_with<std::invalid_argument>([&] { gs::voxelize(cube, s, gs::parameters::resolution(100000)); }, "out of range"));
+  BOOST_TEST(throws_with<std::invalid_argument>([&] { gs::voxelize(cube, s, gs::parameters::resolution(3)); }, "resolution must be an integer in [4, 8192], got 3"));
+  BOOST_TEST(throws_with<std::invalid_argument>([&] { gs::voxelize(cube, s, gs::parameters::resolution(100000)); }, "resolution must be an integer in [4, 8192], got 100000"));
   BOOST_TEST(throws_with<std::length_error>(
       [&] { gs::voxelize(cube, s, gs::parameters::combine(gs::parameters::resolution(1000), gs::parameters::memory_limit(1e9))); },
       "needs about"));

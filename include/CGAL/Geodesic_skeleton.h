@@ -8,6 +8,7 @@
 /// The umbrella header of the package: includes every public header, in the order of the
 /// data flow (DESIGN.md). Include a single stage's header instead to compile less.
 
+#include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
 // Geodesic distances and the Reeb graph.
@@ -48,6 +49,7 @@
 #include <CGAL/Geodesic_skeleton/IO/json.h>
 #include <CGAL/Geodesic_skeleton/IO/obj.h>
 #include <CGAL/Geodesic_skeleton/IO/polylines.h>
+#include <CGAL/Geodesic_skeleton/IO/read_mesh.h>
 #include <CGAL/Geodesic_skeleton/IO/svg_preview.h>
 
 #endif // CGAL_GEODESIC_SKELETON_H

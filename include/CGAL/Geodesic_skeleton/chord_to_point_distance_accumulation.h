@@ -8,6 +8,7 @@
 /// Han and Poston's chord-to-point distance accumulation (paper, equation 4), carried to
 /// 3D polylines with chords of a fixed arc length.
 
+#include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/internal/vec3.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
@@ -31,9 +32,11 @@ inline double distance_to_line(const Vec3& p, const Vec3& a, const Vec3& b)
 {
   const Vec3 ab = sub(b, a), ap = sub(p, a);
   const double length = norm3(ab);
-  if(length < 1e-300)
+  if(!(length > 0))
     return norm3(ap);
-  return norm3(cross3(ab, ap)) / length;
+  // Unit direction first: |ab x ap| squared is a 4th power of lengths, which overflows for
+  // a skeleton about 1e77 across.
+  return norm3(cross3(Vec3{ab[0] / length, ab[1] / length, ab[2] / length}, ap));
 }
 
 // A polyline parameterised by arc length, read at increasing arc lengths (each reader
@@ -141,13 +144,14 @@ OutputIterator chord_to_point_distance_accumulation(const PointRange& points, do
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   const bool closed = choose_parameter(get_parameter(np, internal_np::closed_polyline_tag), false);
-  const int chords = choose_parameter(get_parameter(np, internal_np::number_of_chords_tag), 16);
+  const int chords = internal::checked_parameter(
+      parameter_ranges::number_of_chords,
+      choose_parameter(get_parameter(np, internal_np::number_of_chords_tag),
+                       static_cast<int>(parameter_ranges::number_of_chords.default_value)),
+      "chord_to_point_distance_accumulation");
   if(!(chord_length > 0) || !std::isfinite(chord_length))
     throw std::invalid_argument("chord_to_point_distance_accumulation: the chord length must be "
                                 "finite and positive");
-  if(chords < 1 || chords > 1000)
-    throw std::invalid_argument("chord_to_point_distance_accumulation: number_of_chords must be "
-                                "in [1, 1000], got " + std::to_string(chords));
 
   std::vector<internal::Vec3> p;
   for(const auto& q : points)

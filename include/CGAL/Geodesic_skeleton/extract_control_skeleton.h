@@ -14,6 +14,7 @@
 #include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/geodesic_mapping_function.h>
+#include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 #include <CGAL/Geodesic_skeleton/internal/closed_mesh_interior.h>
 #include <CGAL/Geodesic_skeleton/prune_skeleton.h>
@@ -114,6 +115,34 @@ private:
   Clock::time_point m_start, m_stage_start;
 };
 
+// Checks every numeric parameter of the chain (given or default) against its range
+// (parameter_ranges.h), so that a bad value fails at once, before any voxel work, with a
+// message that names `caller`, the parameter and its range.
+template <typename NamedParameters>
+void check_control_skeleton_parameters(const NamedParameters& np, const std::string& caller)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  namespace ranges = parameter_ranges;
+  checked_parameter(ranges::resolution,
+                    choose_parameter(get_parameter(np, internal_np::resolution_tag), default_voxel_resolution),
+                    caller);
+  memory_limit(np, caller);
+  checked_parameter(ranges::spur_length_factor,
+                    choose_parameter(get_parameter(np, internal_np::spur_length_factor_tag),
+                                     ranges::spur_length_factor.default_value),
+                    caller);
+  checked_parameter(ranges::smoothing_window,
+                    choose_parameter(get_parameter(np, internal_np::smoothing_window_tag),
+                                     static_cast<int>(ranges::smoothing_window.default_value)),
+                    caller);
+  bone_splitting_settings(np, caller);
+  checked_parameter(ranges::number_of_reeb_intervals,
+                    choose_parameter(get_parameter(np, internal_np::number_of_reeb_intervals_tag),
+                                     static_cast<std::size_t>(ranges::number_of_reeb_intervals.default_value)),
+                    caller);
+}
+
 } // namespace internal
 
 /// \ingroup PkgGeodesicSkeletonRef
@@ -168,7 +197,10 @@ private:
 /// \returns the sizes and timings of the stages.
 /// \throws std::invalid_argument for bad input or parameters, with a message naming the
 ///         stage and the problem (see each stage): an empty mesh, non-finite coordinates,
-///         a mesh that encloses no volume at the resolution, a parameter out of range.
+///         a mesh that encloses no volume at the resolution, coordinates beyond 1e150 or a
+///         mesh under 1e-150 across, a parameter out of range. Every numeric parameter is
+///         checked first, before any voxel work, against its range in
+///         `parameter_ranges` (the message names it, its range and the value).
 /// \throws std::length_error when the voxel grid would need more than `memory_limit`.
 ///
 /// \b Complexity: linear in the number of voxels of the grid and the faces and vertices
@@ -189,6 +221,7 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   Control_skeleton_report report;
   internal::Stage_clock<decltype(visitor)> clock(visitor, report);
   out.clear();
+  internal::check_control_skeleton_parameters(np, "extract_control_skeleton");
 
   Dense_voxel_grid solid;
   report.solid_voxels = voxelize(mesh, solid, np);
@@ -251,7 +284,8 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   {
     auto* reeb = get_parameter(np, internal_np::reeb_graph_output_tag);
     const std::size_t intervals =
-        choose_parameter(get_parameter(np, internal_np::number_of_reeb_intervals_tag), std::size_t(30));
+        choose_parameter(get_parameter(np, internal_np::number_of_reeb_intervals_tag),
+                         static_cast<std::size_t>(parameter_ranges::number_of_reeb_intervals.default_value));
     const auto vim = CGAL::get_initialized_vertex_index_map(mesh, np);
     std::vector<double> field(static_cast<std::size_t>(num_vertices(mesh)));
     auto field_map = boost::make_iterator_property_map(field.begin(), vim);

@@ -8,6 +8,7 @@
 /// The mapping function of the Multiresolution Reeb Graph (Hilaga et al. 2001): the
 /// integral of the geodesic distance over the surface, normalised to [0, 1].
 
+#include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/internal/distance_fields.h>
 #include <CGAL/Geodesic_skeleton/internal/vec3.h>
 #include <CGAL/Geodesic_skeleton/internal/vertex_components.h>
@@ -94,11 +95,11 @@ void integral_geodesic_mapping_function(const FaceGraph& mesh, VertexScalarMap f
   using CGAL::parameters::get_parameter;
   using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
 
-  const std::size_t requested =
-      choose_parameter(get_parameter(np, internal_np::number_of_base_vertices_tag), std::size_t(50));
-  if(requested < 1 || requested > 100000)
-    throw std::invalid_argument("integral_geodesic_mapping_function: number_of_base_vertices "
-                                "must be in [1, 100000], got " + std::to_string(requested));
+  const std::size_t requested = internal::checked_parameter(
+      parameter_ranges::number_of_base_vertices,
+      choose_parameter(get_parameter(np, internal_np::number_of_base_vertices_tag),
+                       static_cast<std::size_t>(parameter_ranges::number_of_base_vertices.default_value)),
+      "integral_geodesic_mapping_function");
   if(num_vertices(mesh) == 0)
     throw std::invalid_argument("integral_geodesic_mapping_function: the mesh has no vertices");
 

@@ -8,6 +8,7 @@
 /// The paper's pruning of a one-voxel-thick skeleton (Algorithm 1), followed by the
 /// iterative snipping of spurious end branches.
 
+#include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
 #include <CGAL/Geodesic_skeleton/internal/branched_regions.h>
 #include <CGAL/Geodesic_skeleton/internal/spurious_branches.h>
@@ -86,10 +87,11 @@ Pruning_report prune_skeleton(VoxelSet& skeleton,
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
 
-  const double factor = choose_parameter(get_parameter(np, internal_np::spur_length_factor_tag), 1.2);
-  if(!(factor >= 0 && factor <= 100))
-    throw std::invalid_argument("prune_skeleton: spur_length_factor must be in [0, 100], got " +
-                                std::to_string(factor));
+  const double factor = internal::checked_parameter(
+      parameter_ranges::spur_length_factor,
+      choose_parameter(get_parameter(np, internal_np::spur_length_factor_tag),
+                       parameter_ranges::spur_length_factor.default_value),
+      "prune_skeleton");
   const auto radius_map = choose_parameter(get_parameter(np, internal_np::mat_radius_map_tag),
                                            CGAL::Constant_property_map<Voxel_key, double>(1.0));
   auto radius = [&](const Voxel_key& k) {

@@ -8,6 +8,7 @@
 /// The discrete Reeb graph of a scalar field on the vertices of a mesh (the skeleton that
 /// the paper compares its pruned skeleton with).
 
+#include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/internal/indexed_vertices.h>
 #include <CGAL/Geodesic_skeleton/internal/reeb_pieces.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
@@ -124,9 +125,8 @@ void reeb_graph(const FaceGraph& mesh, VertexScalarMap field, std::size_t number
   const char* caller = "reeb_graph";
   if(num_vertices(mesh) == 0)
     throw std::invalid_argument("reeb_graph: the mesh has no vertices");
-  if(number_of_intervals < 1 || number_of_intervals > 1000000)
-    throw std::invalid_argument("reeb_graph: number_of_intervals must be in [1, 1000000], got " +
-                                std::to_string(number_of_intervals));
+  internal::checked_parameter(parameter_ranges::number_of_reeb_intervals, number_of_intervals, caller,
+                              "number_of_intervals");
 
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, mesh));

@@ -8,6 +8,7 @@
 /// The paper's smoothing of the pruned skeleton (section III.B.i, equation 3): a moving
 /// average over consecutive points along each branch.
 
+#include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/internal/skeleton_branches.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
@@ -55,10 +56,11 @@ void smooth_skeleton(CurveSkeleton& skeleton,
   using CGAL::parameters::get_parameter;
   using Point = decltype(skeleton[0].point);
 
-  const int window = choose_parameter(get_parameter(np, internal_np::smoothing_window_tag), 5);
-  if(window < 1 || window > 1001 || window % 2 == 0)
-    throw std::invalid_argument("smooth_skeleton: smoothing_window must be an odd number in "
-                                "[1, 1001], got " + std::to_string(window));
+  const int window = internal::checked_parameter(
+      parameter_ranges::smoothing_window,
+      choose_parameter(get_parameter(np, internal_np::smoothing_window_tag),
+                       static_cast<int>(parameter_ranges::smoothing_window.default_value)),
+      "smooth_skeleton");
   const int half = window / 2;
 
   // Positions before smoothing: x, y, z, radius.

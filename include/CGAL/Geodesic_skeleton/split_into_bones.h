@@ -12,6 +12,7 @@
 #include <CGAL/Geodesic_skeleton/internal/bone_splitting.h>
 #include <CGAL/Geodesic_skeleton/internal/control_tree.h>
 #include <CGAL/Geodesic_skeleton/internal/skeleton_branches.h>
+#include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
 #include <CGAL/number_utils.h>
@@ -26,32 +27,30 @@ namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
 
-inline void require_in_range(double value, double low, double high, const char* name)
-{
-  if(!(value >= low && value <= high))
-    throw std::invalid_argument(std::string("split_into_bones: ") + name + " must be in [" +
-                                std::to_string(low) + ", " + std::to_string(high) + "], got " +
-                                std::to_string(value));
-}
-
+// The settings of split_into_bones(), checked; `caller` names the function in the errors.
 template <typename NamedParameters>
-Bone_splitting_settings bone_splitting_settings(const NamedParameters& np)
+Bone_splitting_settings bone_splitting_settings(const NamedParameters& np,
+                                                const std::string& caller = "split_into_bones")
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
+  namespace ranges = parameter_ranges;
   Bone_splitting_settings s{
-      choose_parameter(get_parameter(np, internal_np::bend_threshold_tag), 0.08),
-      choose_parameter(get_parameter(np, internal_np::straightness_tolerance_tag), 0.5),
-      choose_parameter(get_parameter(np, internal_np::minimum_bone_length_factor_tag), 2.0),
+      choose_parameter(get_parameter(np, internal_np::bend_threshold_tag), ranges::bend_threshold.default_value),
+      choose_parameter(get_parameter(np, internal_np::straightness_tolerance_tag),
+                       ranges::straightness_tolerance.default_value),
+      choose_parameter(get_parameter(np, internal_np::minimum_bone_length_factor_tag),
+                       ranges::minimum_bone_length_factor.default_value),
       choose_parameter(get_parameter(np, internal_np::chord_length_factors_tag),
-                       std::vector<double>{3.0, 6.0})};
-  require_in_range(s.bend_threshold, 0, 1, "bend_threshold");
-  require_in_range(s.straightness_tolerance, 0, 100, "straightness_tolerance");
-  require_in_range(s.minimum_bone_length_factor, 0, 1000, "minimum_bone_length_factor");
+                       std::vector<double>{ranges::chord_length_factor.default_value,
+                                           2 * ranges::chord_length_factor.default_value})};
+  checked_parameter(ranges::bend_threshold, s.bend_threshold, caller);
+  checked_parameter(ranges::straightness_tolerance, s.straightness_tolerance, caller);
+  checked_parameter(ranges::minimum_bone_length_factor, s.minimum_bone_length_factor, caller);
   if(s.chord_length_factors.empty())
-    throw std::invalid_argument("split_into_bones: chord_length_factors must not be empty");
+    throw std::invalid_argument(caller + ": chord_length_factors must not be empty");
   for(double f : s.chord_length_factors)
-    require_in_range(f, 1e-3, 1000, "each of chord_length_factors");
+    checked_parameter(ranges::chord_length_factor, f, caller, "each of chord_length_factors");
   return s;
 }
 

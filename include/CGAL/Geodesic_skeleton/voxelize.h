@@ -15,6 +15,7 @@
 #include <CGAL/Geodesic_skeleton/internal/peel_surface_voxels.h>
 #include <CGAL/Geodesic_skeleton/internal/principal_frame.h>
 #include <CGAL/Geodesic_skeleton/internal/triangle_box_overlap.h>
+#include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
 #include <CGAL/boost/graph/iterator.h>
@@ -36,7 +37,7 @@ namespace Geodesic_skeleton {
 /// The default of the `resolution` named parameter of `voxelize()`: voxels along the
 /// longest principal axis of the mesh (see benchmark/README.md for the measurement behind
 /// it).
-constexpr int default_voxel_resolution = 64;
+constexpr int default_voxel_resolution = static_cast<int>(parameter_ranges::resolution.default_value);
 
 namespace internal {
 
@@ -274,18 +275,14 @@ std::size_t voxelize(const FaceGraph& mesh, VoxelSet& voxels,
   using CGAL::parameters::get_parameter;
   const char* caller = "voxelize";
 
-  const int resolution =
-      choose_parameter(get_parameter(np, internal_np::resolution_tag), default_voxel_resolution);
+  const int resolution = internal::checked_parameter(
+      parameter_ranges::resolution,
+      choose_parameter(get_parameter(np, internal_np::resolution_tag), default_voxel_resolution), caller);
   const bool fill_holes =
       choose_parameter(get_parameter(np, internal_np::fill_holes_tag), true);
   const bool keep_surface_voxels =
       choose_parameter(get_parameter(np, internal_np::keep_surface_voxels_tag), true);
-  if(resolution < 4 || resolution > 8192)
-  {
-    std::ostringstream msg;
-    msg << caller << ": the resolution " << resolution << " is out of range [4, 8192]";
-    throw std::invalid_argument(msg.str());
-  }
+  internal::memory_limit(np, caller); // checked before any work
 
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, mesh));

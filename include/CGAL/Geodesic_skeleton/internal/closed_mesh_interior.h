@@ -51,7 +51,7 @@ inline bool is_inside_closed_soup(const Vec3& p, const std::vector<Triangle3>& t
       const Vec3 e1 = sub(t[1], t[0]), e2 = sub(t[2], t[0]);
       const Vec3 h = cross3(d, e2);
       const double det = dot3(e1, h);
-      const double scale = std::sqrt(dot3(e1, e1) * dot3(e2, e2));
+      const double scale = norm3(e1) * norm3(e2); // not sqrt of a product of squares: it overflows sooner
       if(std::abs(det) <= 1e-12 * scale)
         continue; // the ray runs along the triangle's plane: no single crossing
       const Vec3 w = sub(p, t[0]);

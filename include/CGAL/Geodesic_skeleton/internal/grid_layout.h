@@ -5,6 +5,7 @@
 #define CGAL_GEODESIC_SKELETON_INTERNAL_GRID_LAYOUT_H
 
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
+#include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
 #include <array>
@@ -22,7 +23,7 @@ namespace Geodesic_skeleton {
 /// \ingroup PkgGeodesicSkeletonRef
 /// The default of the `memory_limit` named parameter of the voxel functions (`voxelize()`,
 /// `distance_transform()`, `thin()`, `to_graph()`): 2 GiB.
-constexpr double default_voxel_memory_limit = 2147483648.;
+constexpr double default_voxel_memory_limit = parameter_ranges::memory_limit.default_value;
 
 namespace internal {
 
@@ -87,12 +88,16 @@ inline const std::array<int, 6>& face_neighbour_positions()
   return positions;
 }
 
-// The `memory_limit` named parameter (bytes), or its default.
+// The `memory_limit` named parameter (bytes), or its default; checked (a NaN limit would
+// let every allocation through).
 template <typename NamedParameters>
-double memory_limit(const NamedParameters& np)
+double memory_limit(const NamedParameters& np, const std::string& caller = "the voxel stages")
 {
-  return CGAL::parameters::choose_parameter(
-      CGAL::parameters::get_parameter(np, internal_np::memory_limit_tag), default_voxel_memory_limit);
+  return checked_parameter(parameter_ranges::memory_limit,
+                           double(CGAL::parameters::choose_parameter(
+                               CGAL::parameters::get_parameter(np, internal_np::memory_limit_tag),
+                               default_voxel_memory_limit)),
+                           caller);
 }
 
 // Throws std::length_error, naming the bytes needed, when `bytes` exceeds `limit`, or when

@@ -8,8 +8,10 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -32,8 +34,47 @@ struct Principal_frame
   std::array<Vec3, 3> axes;
 };
 
-inline Principal_frame principal_frame(const std::vector<Triangle3>& triangles, const char* caller)
+// The largest coordinate and the smallest extent of a mesh that the package handles.
+constexpr double max_coordinate_magnitude = 1e150;
+constexpr double min_mesh_size = 1e-150;
+
+inline Principal_frame principal_frame(const std::vector<Triangle3>& world_triangles, const char* caller)
 {
+  // The moments below are powers 4 and 5 of the coordinates (squared areas, third moments
+  // times areas): in world units they overflow for a mesh about 1e60 across and underflow
+  // for one about 1e-60 across (a "zero area" error, a NaN frame). So they are computed on
+  // the mesh moved to its box's centre and scaled to unit size, which changes nothing else:
+  // the axes are the same, and the centroid is scaled back.
+  Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for(const Triangle3& t : world_triangles)
+    for(const Vec3& p : t)
+      for(int c = 0; c < 3; ++c)
+      {
+        lo[c] = (std::min)(lo[c], p[c]);
+        hi[c] = (std::max)(hi[c], p[c]);
+      }
+  const Vec3 centre{0.5 * lo[0] + 0.5 * hi[0], 0.5 * lo[1] + 0.5 * hi[1], 0.5 * lo[2] + 0.5 * hi[2]};
+  const double size = (std::max)({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  const double magnitude = (std::max)({-lo[0], -lo[1], -lo[2], hi[0], hi[1], hi[2]});
+  if(!(size > 0))
+    throw std::invalid_argument(std::string(caller) + ": the mesh has zero area (all its points are equal)");
+  // The later stages square world lengths (distances, radii), which overflows past 1e154
+  // and loses every digit under 1e-154: outside these bounds, an error rather than a
+  // NaN or silently wrong skeleton.
+  if(!(magnitude <= max_coordinate_magnitude) || size < min_mesh_size)
+  {
+    std::ostringstream msg;
+    msg << caller << ": the mesh is " << size << " across with coordinates up to " << magnitude
+        << "; the package needs coordinates up to " << max_coordinate_magnitude << " and a mesh at least "
+        << min_mesh_size << " across: scale the mesh";
+    throw std::invalid_argument(msg.str());
+  }
+  std::vector<Triangle3> triangles(world_triangles.size());
+  for(std::size_t i = 0; i < triangles.size(); ++i)
+    for(int j = 0; j < 3; ++j)
+      for(int c = 0; c < 3; ++c)
+        triangles[i][j][c] = (world_triangles[i][j][c] - centre[c]) / size;
+
   double area_sum = 0;
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
   std::vector<double> areas(triangles.size());
@@ -73,7 +114,8 @@ inline Principal_frame principal_frame(const std::vector<Triangle3>& triangles, 
     throw std::runtime_error(std::string(caller) + ": the principal axes could not be computed");
 
   Principal_frame frame;
-  frame.centroid = Vec3{centroid[0], centroid[1], centroid[2]};
+  for(int c = 0; c < 3; ++c)
+    frame.centroid[c] = centre[c] + size * centroid[c];
   for(int a = 0; a < 2; ++a)
   {
     Eigen::Vector3d axis = solver.eigenvectors().col(2 - a).normalized();

@@ -1,0 +1,131 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_GEODESIC_SKELETON_IO_READ_MESH_H
+#define CGAL_GEODESIC_SKELETON_IO_READ_MESH_H
+
+/// \file IO/read_mesh.h
+/// Reads a mesh file as `skeletonize` does: any format CGAL reads, repaired when it is not
+/// a clean manifold, with a clear error for a file that holds no usable mesh.
+
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/number_utils.h>
+
+#include <cctype>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Geodesic_skeleton {
+namespace IO {
+namespace internal {
+
+// Whether `path` is a binary STL file with a non-finite vertex coordinate. CGAL's STL
+// reader merges the corners of the triangles by comparing points, and a NaN compares equal
+// to any point there: a NaN corner would silently become another vertex. So binary STL
+// files (an 80-byte header, a 32-bit count, 50 bytes per triangle) are scanned first.
+inline bool binary_STL_has_non_finite_coordinate(const std::string& path)
+{
+  if(path.size() < 4)
+    return false;
+  std::string extension = path.substr(path.size() - 4);
+  for(char& c : extension)
+    c = char(std::tolower(static_cast<unsigned char>(c)));
+  std::ifstream in(path, std::ios::binary);
+  char header[80];
+  unsigned char count_bytes[4];
+  if(extension != ".stl" || !in.read(header, 80) || !in.read(reinterpret_cast<char*>(count_bytes), 4))
+    return false;
+  const std::uint64_t count = count_bytes[0] | (count_bytes[1] << 8) | (count_bytes[2] << 16) |
+                              (std::uint64_t(count_bytes[3]) << 24);
+  in.seekg(0, std::ios::end);
+  if(std::uint64_t(in.tellg()) != 84 + 50 * count) // not binary STL: the text reader parses it
+    return false;
+  in.seekg(84);
+  static_assert(sizeof(float) == 4, "STL stores 32-bit floats");
+  char record[50];
+  for(std::uint64_t t = 0; t < count && in.read(record, 50); ++t)
+    for(int c = 3; c < 12; ++c) // the normal (floats 0-2) is not read
+    {
+      float value; // little-endian, as on every platform CGAL's binary STL reader supports
+      std::memcpy(&value, record + 4 * c, 4);
+      if(!std::isfinite(value))
+        return true;
+    }
+  return false;
+}
+
+} // namespace internal
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// Reads the mesh file `path` (OFF, OBJ, PLY, STL, ...: any format CGAL reads, by its
+/// extension) into `mesh` (cleared first). A file that is not a clean manifold (as artists'
+/// meshes often are: non-manifold edges or vertices, duplicated faces, inconsistent
+/// orientation) is read as a polygon soup, repaired (`repair_polygon_soup()`: duplicated
+/// and degenerate polygons go), oriented (`orient_polygon_soup()`: non-manifold vertices and
+/// edges are split) and turned into a mesh.
+///
+/// \tparam PolygonMesh a model of `MutableFaceGraph` with a vertex point map
+///         (`Surface_mesh`, `Polyhedron_3`, ...).
+/// \throws std::runtime_error with a message "PATH: problem" when the file cannot be
+///         opened, cannot be parsed (empty, garbage, wrong counts), has a non-finite
+///         coordinate or a face that refers to a vertex that does not exist, or holds no
+///         face.
+template <typename PolygonMesh>
+void read_mesh(const std::string& path, PolygonMesh& mesh)
+{
+  using Point = typename boost::property_traits<
+      typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>::value_type;
+  auto fail = [&](const std::string& problem) { throw std::runtime_error(path + ": " + problem); };
+  auto finite = [](const Point& p) {
+    return std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y())) &&
+           std::isfinite(CGAL::to_double(p.z()));
+  };
+  if(!std::ifstream(path))
+    fail("cannot open the file");
+  if(internal::binary_STL_has_non_finite_coordinate(path))
+    fail("a vertex has a non-finite coordinate (NaN or infinite)");
+  // Read the soup first, so that its indices and coordinates are checked before CGAL builds
+  // anything from them (a face index past the vertices would be read out of bounds).
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  if(!CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false)))
+    fail("the file cannot be parsed as a mesh (OFF, OBJ, PLY, STL, ...)");
+  for(const Point& p : points)
+    if(!finite(p))
+      fail("a vertex has a non-finite coordinate (NaN or infinite)");
+  for(const auto& polygon : polygons)
+    for(std::size_t i : polygon)
+      if(i >= points.size())
+        fail("a face refers to vertex " + std::to_string(i) + ", but the file has only " +
+             std::to_string(points.size()) + " vertices");
+  if(polygons.empty())
+    fail("the mesh has no faces");
+  clear(mesh);
+  if(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
+  {
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+    return;
+  }
+  CGAL::Polygon_mesh_processing::repair_polygon_soup(points, polygons);
+  CGAL::Polygon_mesh_processing::orient_polygon_soup(points, polygons);
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  if(num_faces(mesh) == 0)
+    fail("the mesh has no faces (every face is degenerate)");
+}
+
+} // namespace IO
+} // namespace Geodesic_skeleton
+} // namespace CGAL
+
+#endif // CGAL_GEODESIC_SKELETON_IO_READ_MESH_H

@@ -1,0 +1,110 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_GEODESIC_SKELETON_PARAMETER_RANGES_H
+#define CGAL_GEODESIC_SKELETON_PARAMETER_RANGES_H
+
+/// \file parameter_ranges.h
+/// The valid ranges and defaults of the package's numeric named parameters: the one place
+/// that the functions which read them and the `skeletonize` program both use.
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace CGAL {
+namespace Geodesic_skeleton {
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// The valid values and the default of a numeric named parameter: every value in
+/// [`low`, `high`] (NaN never), an integer when `integer` is set, an odd one when `odd` is.
+struct Parameter_range
+{
+  const char* name;     ///< the named parameter
+  double low;           ///< smallest valid value
+  double high;          ///< largest valid value (may be infinite)
+  double default_value; ///< the value taken when the parameter is not given
+  bool integer;         ///< only whole numbers
+  bool odd;             ///< only odd whole numbers
+
+  /// Whether `value` is valid.
+  bool contains(double value) const
+  {
+    if(!(value >= low && value <= high)) // false for NaN
+      return false;
+    if(integer && value != std::floor(value))
+      return false;
+    return !odd || std::fmod(value, 2.) != 0.;
+  }
+
+  /// The valid values in words, e.g. "an odd number in [1, 1001]".
+  std::string valid_values() const
+  {
+    std::ostringstream text;
+    text.precision(12);
+    text << (odd ? "an odd number in [" : integer ? "an integer in [" : "in [") << low << ", " << high << "]";
+    return text.str();
+  }
+};
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// The ranges and defaults of the package's numeric named parameters (the functions that
+/// read each one document it).
+namespace parameter_ranges {
+
+/// `voxelize()`: voxels along the longest principal axis.
+inline constexpr Parameter_range resolution{"resolution", 4, 8192, 64, true, false};
+/// The voxel stages: the most memory a stage may allocate, in bytes (default 2 GiB).
+inline constexpr Parameter_range memory_limit{"memory_limit", 1, std::numeric_limits<double>::infinity(),
+                                              2147483648., false, false};
+/// `prune_skeleton()`: end branches shorter than this many MAT radii are snipped.
+inline constexpr Parameter_range spur_length_factor{"spur_length_factor", 0, 100, 1.2, false, false};
+/// `smooth_skeleton()`: points averaged along the branches.
+inline constexpr Parameter_range smoothing_window{"smoothing_window", 1, 1001, 5, true, true};
+/// `split_into_bones()`: the chord-to-point accumulation that makes a bend joint.
+inline constexpr Parameter_range bend_threshold{"bend_threshold", 0, 1, 0.08, false, false};
+/// `split_into_bones()`: allowed deviation of a bone from its chord, in MAT radii.
+inline constexpr Parameter_range straightness_tolerance{"straightness_tolerance", 0, 100, 0.5, false, false};
+/// `split_into_bones()`: the shortest bone, in MAT radii.
+inline constexpr Parameter_range minimum_bone_length_factor{"minimum_bone_length_factor", 0, 1000, 2.0,
+                                                            false, false};
+/// `split_into_bones()`: each chord length, in mean MAT radii (defaults: 3 and 6).
+inline constexpr Parameter_range chord_length_factor{"chord_length_factors", 1e-3, 1000, 3.0, false, false};
+/// `chord_to_point_distance_accumulation()`: chords averaged per point.
+inline constexpr Parameter_range number_of_chords{"number_of_chords", 1, 1000, 16, true, false};
+/// `reeb_graph()` and `extract_control_skeleton()`: intervals of the Reeb graph.
+inline constexpr Parameter_range number_of_reeb_intervals{"number_of_reeb_intervals", 1, 1000000, 30, true,
+                                                          false};
+/// `integral_geodesic_mapping_function()`: base vertices of the integral.
+inline constexpr Parameter_range number_of_base_vertices{"number_of_base_vertices", 1, 100000, 50, true,
+                                                         false};
+
+} // namespace parameter_ranges
+
+namespace internal {
+
+// Returns `value` when `range` contains it; otherwise throws std::invalid_argument
+// "<caller>: <name> must be <valid values>, got <value>" (`name` defaults to the range's).
+template <typename T>
+T checked_parameter(const Parameter_range& range, T value, const std::string& caller,
+                    const char* name = nullptr)
+{
+  const double v = static_cast<double>(value);
+  if(!range.contains(v))
+  {
+    std::ostringstream msg;
+    msg.precision(12);
+    msg << caller << ": " << (name ? name : range.name) << " must be " << range.valid_values() << ", got "
+        << value;
+    throw std::invalid_argument(msg.str());
+  }
+  return value;
+}
+
+} // namespace internal
+} // namespace Geodesic_skeleton
+} // namespace CGAL
+
+#endif // CGAL_GEODESIC_SKELETON_PARAMETER_RANGES_H
