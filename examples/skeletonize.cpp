@@ -49,6 +49,7 @@ struct Options
 {
   std::string input, output, svg, svg_stage = "control";
   int resolution = gs::default_voxel_resolution;
+  double small_piece_fraction = ranges::small_piece_fraction.default_value;
   double spur_length_factor = ranges::spur_length_factor.default_value;
   int smoothing_window = static_cast<int>(ranges::smoothing_window.default_value);
   double bend_threshold = ranges::bend_threshold.default_value;
@@ -69,6 +70,8 @@ struct Numeric_option
 };
 const Numeric_option numeric_options[] = {
     {"--resolution", "N", ranges::resolution, "voxels along the longest principal axis"},
+    {"--small-pieces", "F", ranges::small_piece_fraction,
+     "drop detached pieces smaller than F times the largest (0 keeps all)"},
     {"--spur-length", "F", ranges::spur_length_factor, "snip end branches shorter than F MAT radii"},
     {"--smoothing-window", "W", ranges::smoothing_window, "points averaged along branches"},
     {"--bend-threshold", "T", ranges::bend_threshold, "chord-to-point accumulation that makes a joint"},
@@ -157,6 +160,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--resolution") o.resolution = parse_number<int>(a, value());
     else if(a == "--no-fill-holes") o.fill_holes = false;
     else if(a == "--peel-surface-voxels") o.keep_surface_voxels = false;
+    else if(a == "--small-pieces") o.small_piece_fraction = parse_number<double>(a, value());
     else if(a == "--spur-length") o.spur_length_factor = parse_number<double>(a, value());
     else if(a == "--smoothing-window") o.smoothing_window = parse_number<int>(a, value());
     else if(a == "--bend-threshold") o.bend_threshold = parse_number<double>(a, value());
@@ -242,6 +246,7 @@ int run(const Options& o)
         mesh, control,
         params::combine(params::resolution(o.resolution), params::fill_holes(o.fill_holes),
                         params::keep_surface_voxels(o.keep_surface_voxels),
+                        params::small_piece_fraction(o.small_piece_fraction),
                         params::spur_length_factor(o.spur_length_factor),
                         params::smoothing_window(o.smoothing_window),
                         params::bend_threshold(o.bend_threshold),
@@ -272,6 +277,7 @@ int run(const Options& o)
                   {"closed", CGAL::is_closed(mesh)}, {"components", components}}},
         {"parameters", {{"resolution", o.resolution}, {"fill_holes", o.fill_holes},
                         {"keep_surface_voxels", o.keep_surface_voxels},
+                        {"small_piece_fraction", o.small_piece_fraction},
                         {"spur_length_factor", o.spur_length_factor},
                         {"smoothing_window", o.smoothing_window},
                         {"bend_threshold", o.bend_threshold},
@@ -279,7 +285,8 @@ int run(const Options& o)
                         {"minimum_bone_length_factor", o.minimum_bone_length_factor},
                         {"reeb_intervals", o.reeb_intervals}, {"voxel_size", report.voxel_size}}},
         {"timings_ms", timings},
-        {"stages", {{"solid", {{"voxels", report.solid_voxels}}},
+        {"stages", {{"solid", {{"voxels", report.solid_voxels}, {"pieces", report.small_pieces.pieces},
+                               {"small_pieces_removed", report.small_pieces.removed_pieces}}},
                     {"thinned", stage_json(report.thinned)},
                     {"spurious_cycles", {{"cut", report.spurious_cycles_cut}}},
                     {"pruned", stage_json(report.pruned)},

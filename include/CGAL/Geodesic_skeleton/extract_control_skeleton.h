@@ -19,6 +19,7 @@
 #include <CGAL/Geodesic_skeleton/internal/closed_mesh_interior.h>
 #include <CGAL/Geodesic_skeleton/prune_skeleton.h>
 #include <CGAL/Geodesic_skeleton/reeb_graph.h>
+#include <CGAL/Geodesic_skeleton/remove_small_pieces.h>
 #include <CGAL/Geodesic_skeleton/skeleton_statistics.h>
 #include <CGAL/Geodesic_skeleton/smooth_skeleton.h>
 #include <CGAL/Geodesic_skeleton/split_into_bones.h>
@@ -47,6 +48,7 @@ struct Control_skeleton_report
   int resolution = 0;              ///< voxels along the longest principal axis
   double voxel_size = 0;           ///< edge of a voxel, in world units
   std::size_t solid_voxels = 0;    ///< voxels of the solid interior
+  Small_pieces_report small_pieces; ///< the solid's pieces, and the small detached ones removed
   Skeleton_statistics thinned;     ///< the curve skeleton after thinning
   std::size_t spurious_cycles_cut = 0; ///< cycles the mesh has no handle for, opened (`cut_spurious_cycles()`)
   Skeleton_statistics pruned;      ///< after pruning (Algorithm 1 and snipping)
@@ -55,9 +57,9 @@ struct Control_skeleton_report
   std::size_t reeb_nodes = 0;      ///< nodes of the Reeb graph, when one was asked for
   std::size_t reeb_edges = 0;      ///< arcs of the Reeb graph, when one was asked for
   /// Wall-clock time of each stage in milliseconds, in the order they ran: "voxelize",
-  /// "distance_transform", "thin", "thinned_graph" (the graph and counts of the thinned
-  /// skeleton), "cut_spurious_cycles", "prune", "to_graph", "smooth", "split_into_bones", "joints_inside", and
-  /// "reeb_graph" when asked for.
+  /// "remove_small_pieces", "distance_transform", "thin", "thinned_graph" (the graph and
+  /// counts of the thinned skeleton), "cut_spurious_cycles", "prune", "to_graph", "smooth",
+  /// "split_into_bones", "joints_inside", and "reeb_graph" when asked for.
   std::vector<std::pair<std::string, double>> timings_ms;
   double total_ms = 0;             ///< the whole call, in milliseconds
 };
@@ -128,6 +130,10 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
                     choose_parameter(get_parameter(np, internal_np::resolution_tag), default_voxel_resolution),
                     caller);
   memory_limit(np, caller);
+  checked_parameter(ranges::small_piece_fraction,
+                    choose_parameter(get_parameter(np, internal_np::small_piece_fraction_tag),
+                                     ranges::small_piece_fraction.default_value),
+                    caller);
   checked_parameter(ranges::spur_length_factor,
                     choose_parameter(get_parameter(np, internal_np::spur_length_factor_tag),
                                      ranges::spur_length_factor.default_value),
@@ -154,9 +160,13 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 /// mapped to it), `smooth_skeleton()` (5-point moving average) and `split_into_bones()`
 /// (joints and bones, rooted at the most central junction).
 ///
-/// Between `thin()` and `prune_skeleton()`, `cut_spurious_cycles()` opens the cycles of
-/// the skeleton that the mesh has no handle for (where parts come within a voxel of each
-/// other, the solid joins them).
+/// Between `voxelize()` and `distance_transform()`, `remove_small_pieces()` removes the
+/// detached pieces of the solid smaller than `small_piece_fraction` of the largest (a
+/// character's loose eyes or teeth): their mesh vertices map to the nearest point of the
+/// remaining skeleton, so the result has one tree per body. Between `thin()` and
+/// `prune_skeleton()`, `cut_spurious_cycles()` opens the cycles of the skeleton that the
+/// mesh has no handle for (where parts come within a voxel of each other, the solid joins
+/// them).
 ///
 /// The result is in the mesh's own coordinates and does not change (beyond the rounding
 /// of coordinates) when the mesh is rotated or moved, since the grid follows the mesh's
@@ -169,6 +179,7 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 /// \param out receives the control skeleton (cleared first).
 /// \param np optional named parameters: every parameter of the stages, passed on to them
 ///   (`vertex_point_map`, `resolution`, `fill_holes`, `memory_limit` of the voxel stages;
+///   `small_piece_fraction` of `remove_small_pieces()`;
 ///   `spur_length_factor` of `prune_skeleton()`; `smoothing_window` of
 ///   `smooth_skeleton()`; `bend_threshold`, `straightness_tolerance`,
 ///   `minimum_bone_length_factor`, `chord_length_factors` of `split_into_bones()`), and:
@@ -228,6 +239,9 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   report.resolution = choose_parameter(get_parameter(np, internal_np::resolution_tag), default_voxel_resolution);
   report.voxel_size = solid.frame().voxel_size();
   clock.finished("voxelize");
+
+  report.small_pieces = remove_small_pieces(solid, np);
+  clock.finished("remove_small_pieces");
 
   const Voxel_distance_field distances = distance_transform(solid, np);
   clock.finished("distance_transform");

@@ -56,6 +56,9 @@ namespace parameter_ranges {
 
 /// `voxelize()`: voxels along the longest principal axis.
 inline constexpr Parameter_range resolution{"resolution", 4, 8192, 64, true, false};
+/// `remove_small_pieces()`: pieces of the solid smaller than this fraction of the largest
+/// are removed (0 keeps all).
+inline constexpr Parameter_range small_piece_fraction{"small_piece_fraction", 0, 1, 0.05, false, false};
 /// The voxel stages: the most memory a stage may allocate, in bytes (default 2 GiB).
 inline constexpr Parameter_range memory_limit{"memory_limit", 1, std::numeric_limits<double>::infinity(),
                                               2147483648., false, false};

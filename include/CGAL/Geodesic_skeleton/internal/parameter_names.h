@@ -44,3 +44,4 @@ CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(number_of_reeb_intervals)
 
 // voxelize (appended)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(keep_surface_voxels)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(small_piece_fraction)

@@ -1,0 +1,232 @@
+// Characters as artists make them: many overlapping pieces (self-intersecting), holes, eyes
+// half sunk in the head, teeth inside it, a loose piece floating free of the body.
+// Specification of CGAL/Geodesic_skeleton/remove_small_pieces.h and of the pipeline on
+// such meshes.
+#include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
+#include <CGAL/Geodesic_skeleton/extract_control_skeleton.h>
+#include <CGAL/Geodesic_skeleton/remove_small_pieces.h>
+#include <CGAL/Geodesic_skeleton/voxelize.h>
+
+#include <Geodesic_skeleton_test/shapes.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace gs = CGAL::Geodesic_skeleton;
+namespace params = CGAL::Geodesic_skeleton::parameters;
+namespace test = Geodesic_skeleton_test;
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+using Control = gs::Control_skeleton<Point>;
+using Curve = gs::Curve_skeleton<Point, boost::graph_traits<Mesh>::vertex_descriptor>;
+using Vec = std::array<double, 3>;
+
+// The solid pieces a character is made of, as segments with a radius (a sphere is a
+// segment of length zero): inside the character means within the radius of one of them.
+struct Piece
+{
+  Vec from, to;
+  double radius;
+};
+
+double distance_to_segment(const Vec& p, const Piece& s)
+{
+  Vec d{s.to[0] - s.from[0], s.to[1] - s.from[1], s.to[2] - s.from[2]};
+  const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+  double t = 0;
+  if(dd > 0)
+    t = std::clamp(((p[0] - s.from[0]) * d[0] + (p[1] - s.from[1]) * d[1] + (p[2] - s.from[2]) * d[2]) / dd, 0., 1.);
+  const Vec q{s.from[0] + t * d[0] - p[0], s.from[1] + t * d[1] - p[1], s.from[2] + t * d[2] - p[2]};
+  return std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+}
+
+// Appends a capped cylinder from `a` to `b` and a sphere at `b`, both of radius `r`, as two
+// separate closed surfaces that overlap (an artist's limb with a rounded end). Faces whose
+// index is in `missing` are left out (holes).
+void add_limb(test::Soup& soup, const Vec& a, const Vec& b, double r, const std::vector<std::size_t>& missing = {})
+{
+  const Vec w0{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  const double length = std::sqrt(w0[0] * w0[0] + w0[1] * w0[1] + w0[2] * w0[2]);
+  const Vec w{w0[0] / length, w0[1] / length, w0[2] / length};
+  const Vec helper = std::abs(w[0]) < 0.9 ? Vec{1, 0, 0} : Vec{0, 1, 0};
+  Vec u{helper[1] * w[2] - helper[2] * w[1], helper[2] * w[0] - helper[0] * w[2], helper[0] * w[1] - helper[1] * w[0]};
+  const double nu = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+  u = {u[0] / nu, u[1] / nu, u[2] / nu};
+  const Vec v{w[1] * u[2] - w[2] * u[1], w[2] * u[0] - w[0] * u[2], w[0] * u[1] - w[1] * u[0]};
+  test::Soup tube = test::cylinder(r, length, 16, std::max(2, int(length / r)), true);
+  for(auto& p : tube.points)
+    p = {a[0] + p[0] * u[0] + p[1] * v[0] + p[2] * w[0], a[1] + p[0] * u[1] + p[1] * v[1] + p[2] * w[1],
+         a[2] + p[0] * u[2] + p[1] * v[2] + p[2] * w[2]};
+  test::Soup kept;
+  kept.points = tube.points;
+  for(std::size_t f = 0; f < tube.faces.size(); ++f)
+    if(std::find(missing.begin(), missing.end(), f) == missing.end())
+      kept.faces.push_back(tube.faces[f]);
+  test::append(soup, kept);
+  test::append(soup, test::icosphere(r, 2), b[0], b[1], b[2]);
+}
+
+void add_ball(test::Soup& soup, const Vec& c, double r) { test::append(soup, test::icosphere(r, 2), c[0], c[1], c[2]); }
+
+// A biped about 2.5 units tall: torso (with holes), head, two eyes half sunk in the head,
+// teeth inside it, two arms, two legs, and a bobble floating above the head, two voxels
+// (at resolution 64) away from it. `pieces` receives the solid parts.
+Mesh biped(std::vector<Piece>& pieces, bool with_bobble = true)
+{
+  test::Soup s;
+  pieces.clear();
+  auto limb = [&](const Vec& a, const Vec& b, double r, const std::vector<std::size_t>& missing = {}) {
+    add_limb(s, a, b, r, missing);
+    pieces.push_back({a, b, r});
+  };
+  auto ball = [&](const Vec& c, double r) {
+    add_ball(s, c, r);
+    pieces.push_back({c, c, r});
+  };
+  limb({0, 0, 1.0}, {0, 0, 1.75}, 0.25, {3, 4, 40, 41}); // torso, with two holes
+  ball({0, 0, 2.08}, 0.22);                               // head, overlapping the torso's end
+  ball({0.08, 0.19, 2.14}, 0.045);                        // eyes, half sunk in the head
+  ball({-0.08, 0.19, 2.14}, 0.045);
+  test::append(s, test::box(-0.05, 0.08, 1.97, 0.05, 0.14, 2.0)); // teeth, inside the head
+  limb({0.22, 0, 1.68}, {0.9, 0, 1.25}, 0.08);            // arms
+  limb({-0.22, 0, 1.68}, {-0.9, 0, 1.25}, 0.08);
+  limb({0.12, 0, 1.0}, {0.22, 0, 0.08}, 0.1);             // legs
+  limb({-0.12, 0, 1.0}, {-0.22, 0, 0.08}, 0.1);
+  if(with_bobble)
+    ball({0, 0, 2.42}, 0.04); // 0.08 above the head: detached
+  return test::mesh_of<Mesh>(s);
+}
+
+Vec vec(const Point& p) { return {p.x(), p.y(), p.z()}; }
+
+double distance_to_character(const Point& p, const std::vector<Piece>& pieces)
+{
+  double best = std::numeric_limits<double>::infinity();
+  for(const Piece& piece : pieces)
+    best = std::min(best, distance_to_segment(vec(p), piece) - piece.radius);
+  return best; // negative inside
+}
+
+// Whether some end joint lies within `tolerance` of `tip`.
+bool an_end_reaches(const Control& c, const Vec& tip, double tolerance)
+{
+  for(const auto& j : c.joints)
+    if(j.kind == gs::Joint_kind::end && distance_to_segment(vec(j.point), Piece{tip, tip, 0}) <= tolerance)
+      return true;
+  return false;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(game_characters)
+
+BOOST_AUTO_TEST_CASE(the_mesh_is_as_artists_make_it)
+{
+  std::vector<Piece> pieces;
+  const Mesh mesh = biped(pieces);
+  BOOST_TEST(!CGAL::is_closed(mesh)); // the torso's holes
+  std::vector<std::size_t> component(num_faces(mesh));
+  BOOST_TEST(CGAL::Polygon_mesh_processing::connected_components(
+                 mesh, boost::make_iterator_property_map(component.begin(), get(CGAL::face_index, mesh))) >= 15u);
+}
+
+BOOST_AUTO_TEST_CASE(a_character_gets_one_connected_skeleton)
+{
+  std::vector<Piece> pieces;
+  const Mesh mesh = biped(pieces);
+  Control control;
+  Curve curve;
+  const gs::Control_skeleton_report report =
+      gs::extract_control_skeleton(mesh, control, params::curve_skeleton_output(&curve));
+  BOOST_TEST_MESSAGE("biped: " << report.small_pieces.pieces << " pieces, " << report.small_pieces.removed_pieces
+                               << " removed, " << control.joints.size() << " joints, " << control.bones.size()
+                               << " bones");
+  BOOST_TEST(report.small_pieces.pieces == 2u); // the body and the bobble
+  BOOST_TEST(report.small_pieces.removed_pieces == 1u);
+  BOOST_TEST(control.roots.size() == 1u);
+  BOOST_TEST(control.cut_bones.empty());
+  BOOST_TEST(control.bones.size() >= 6u);
+  BOOST_TEST(control.bones.size() <= 35u);
+
+  // Every joint inside the body (within a voxel: the solid holds the surface voxels).
+  for(const auto& j : control.joints)
+  {
+    BOOST_TEST(std::isfinite(j.point.x() + j.point.y() + j.point.z()));
+    BOOST_TEST(distance_to_character(j.point, pieces) <= report.voxel_size);
+  }
+  // Every limb reached to its tip (hands and feet), within its radius and two voxels.
+  for(const Vec& tip : {Vec{0.9, 0, 1.25}, Vec{-0.9, 0, 1.25}, Vec{0.22, 0, 0.08}, Vec{-0.22, 0, 0.08}})
+    BOOST_TEST(an_end_reaches(control, tip, 0.1 + 2 * report.voxel_size));
+
+  // Every mesh vertex, the bobble's too, maps to exactly one curve-skeleton vertex.
+  std::size_t mapped = 0;
+  for(std::size_t v = 0; v < num_vertices(curve); ++v)
+    mapped += curve[v].vertices.size();
+  BOOST_TEST(mapped == std::size_t(num_vertices(mesh)));
+}
+
+BOOST_AUTO_TEST_CASE(small_pieces_can_be_kept_as_their_own_trees)
+{
+  std::vector<Piece> pieces;
+  const Mesh mesh = biped(pieces);
+  Control control;
+  const gs::Control_skeleton_report report =
+      gs::extract_control_skeleton(mesh, control, params::small_piece_fraction(0.));
+  BOOST_TEST(report.small_pieces.removed_pieces == 0u);
+  BOOST_TEST(control.roots.size() == 2u);
+}
+
+BOOST_AUTO_TEST_CASE(two_characters_keep_two_skeletons)
+{
+  std::vector<Piece> pieces;
+  const Mesh one = biped(pieces, false);
+  Mesh two = one;
+  for(auto v : vertices(two))
+    two.point(v) = Point(two.point(v).x() + 3, two.point(v).y(), two.point(v).z());
+  Mesh both = one;
+  CGAL::copy_face_graph(two, both);
+  Control control;
+  const gs::Control_skeleton_report report = gs::extract_control_skeleton(both, control);
+  BOOST_TEST(report.small_pieces.pieces == 2u);
+  BOOST_TEST(report.small_pieces.removed_pieces == 0u);
+  BOOST_TEST(control.roots.size() == 2u);
+}
+
+BOOST_AUTO_TEST_CASE(remove_small_pieces_removes_exactly_the_small_ones)
+{
+  // Three balls of radius 1, 0.5 and 0.2: at fraction 0.05 only the smallest (0.8 % of the
+  // largest's volume) goes; at 0.2 the middle one (12.5 %) too; at 0 none.
+  test::Soup s = test::icosphere(1, 3);
+  test::append(s, test::icosphere(0.5, 3), 3, 0, 0);
+  test::append(s, test::icosphere(0.2, 3), 0, 3, 0);
+  const Mesh mesh = test::mesh_of<Mesh>(s);
+  for(const auto& [fraction, removed] : {std::pair<double, std::size_t>{0.05, 1}, {0.2, 2}, {0., 0}})
+  {
+    gs::Dense_voxel_grid solid;
+    const std::size_t before = gs::voxelize(mesh, solid);
+    const gs::Small_pieces_report r = gs::remove_small_pieces(solid, params::small_piece_fraction(fraction));
+    BOOST_TEST(r.pieces == 3u);
+    BOOST_TEST(r.removed_pieces == removed);
+    BOOST_TEST(solid.size() + r.removed_voxels == before);
+  }
+  gs::Dense_voxel_grid solid;
+  gs::voxelize(mesh, solid);
+  BOOST_CHECK_THROW(gs::remove_small_pieces(solid, params::small_piece_fraction(1.5)), std::invalid_argument);
+  BOOST_CHECK_THROW(gs::remove_small_pieces(solid, params::small_piece_fraction(-0.1)), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
