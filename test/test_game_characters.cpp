@@ -4,7 +4,10 @@
 // such meshes.
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
 #include <CGAL/Geodesic_skeleton/extract_control_skeleton.h>
+#include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/remove_small_pieces.h>
+#include <CGAL/Geodesic_skeleton/skeleton_statistics.h>
+#include <CGAL/Geodesic_skeleton/thin.h>
 #include <CGAL/Geodesic_skeleton/voxelize.h>
 
 #include <Geodesic_skeleton_test/shapes.h>
@@ -214,19 +217,21 @@ BOOST_AUTO_TEST_CASE(remove_small_pieces_removes_exactly_the_small_ones)
   test::append(s, test::icosphere(0.5, 3), 3, 0, 0);
   test::append(s, test::icosphere(0.2, 3), 0, 3, 0);
   const Mesh mesh = test::mesh_of<Mesh>(s);
-  for(const auto& [fraction, removed] : {std::pair<double, std::size_t>{0.05, 1}, {0.2, 2}, {0., 0}})
-  {
-    gs::Dense_voxel_grid solid;
-    const std::size_t before = gs::voxelize(mesh, solid);
-    const gs::Small_pieces_report r = gs::remove_small_pieces(solid, params::small_piece_fraction(fraction));
-    BOOST_TEST(r.pieces == 3u);
-    BOOST_TEST(r.removed_pieces == removed);
-    BOOST_TEST(solid.size() + r.removed_voxels == before);
-  }
   gs::Dense_voxel_grid solid;
   gs::voxelize(mesh, solid);
-  BOOST_CHECK_THROW(gs::remove_small_pieces(solid, params::small_piece_fraction(1.5)), std::invalid_argument);
-  BOOST_CHECK_THROW(gs::remove_small_pieces(solid, params::small_piece_fraction(-0.1)), std::invalid_argument);
+  const gs::Voxel_distance_field distances = gs::distance_transform(solid);
+  gs::thin(solid, distances);
+  for(const auto& [fraction, removed] : {std::pair<double, std::size_t>{0.05, 1}, {0.2, 2}, {0., 0}})
+  {
+    gs::Dense_voxel_grid skeleton = solid;
+    const gs::Small_pieces_report r = gs::remove_small_pieces(skeleton, distances, params::small_piece_fraction(fraction));
+    BOOST_TEST(r.pieces == 3u);
+    BOOST_TEST(r.removed_pieces == removed);
+    BOOST_TEST(skeleton.size() + r.removed_voxels == solid.size());
+    BOOST_TEST(gs::internal::skeleton_statistics_of_voxels(skeleton).components == 3 - removed);
+  }
+  BOOST_CHECK_THROW(gs::remove_small_pieces(solid, distances, params::small_piece_fraction(1.5)), std::invalid_argument);
+  BOOST_CHECK_THROW(gs::remove_small_pieces(solid, distances, params::small_piece_fraction(-0.1)), std::invalid_argument);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

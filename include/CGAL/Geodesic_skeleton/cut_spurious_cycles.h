@@ -285,6 +285,8 @@ std::size_t cut_spurious_cycles_impl(VoxelSet& skeleton, const FaceGraph& mesh, 
   const Skeleton_adjacency graph = skeleton_adjacency(skeleton, layout);
   std::vector<bool> removed(graph.nodes.size(), false);
   const auto [components, initial_cycles] = components_and_cycles(graph, removed);
+  if(initial_cycles == 0)
+    return 0;
   const std::size_t handles = capped_genus_sum(mesh);
   if(initial_cycles <= handles)
     return 0;

@@ -48,7 +48,7 @@ struct Control_skeleton_report
   int resolution = 0;              ///< voxels along the longest principal axis
   double voxel_size = 0;           ///< edge of a voxel, in world units
   std::size_t solid_voxels = 0;    ///< voxels of the solid interior
-  Small_pieces_report small_pieces; ///< the solid's pieces, and the small detached ones removed
+  Small_pieces_report small_pieces; ///< the skeleton's pieces, and the small detached ones removed
   Skeleton_statistics thinned;     ///< the curve skeleton after thinning
   std::size_t spurious_cycles_cut = 0; ///< cycles the mesh has no handle for, opened (`cut_spurious_cycles()`)
   Skeleton_statistics pruned;      ///< after pruning (Algorithm 1 and snipping)
@@ -57,8 +57,8 @@ struct Control_skeleton_report
   std::size_t reeb_nodes = 0;      ///< nodes of the Reeb graph, when one was asked for
   std::size_t reeb_edges = 0;      ///< arcs of the Reeb graph, when one was asked for
   /// Wall-clock time of each stage in milliseconds, in the order they ran: "voxelize",
-  /// "remove_small_pieces", "distance_transform", "thin", "thinned_graph" (the graph and
-  /// counts of the thinned skeleton), "cut_spurious_cycles", "prune", "to_graph", "smooth",
+  /// "distance_transform", "thin", "thinned_graph" (the graph and counts of the thinned
+  /// skeleton), "remove_small_pieces", "cut_spurious_cycles", "prune", "to_graph", "smooth",
   /// "split_into_bones", "joints_inside", and "reeb_graph" when asked for.
   std::vector<std::pair<std::string, double>> timings_ms;
   double total_ms = 0;             ///< the whole call, in milliseconds
@@ -160,13 +160,12 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 /// mapped to it), `smooth_skeleton()` (5-point moving average) and `split_into_bones()`
 /// (joints and bones, rooted at the most central junction).
 ///
-/// Between `voxelize()` and `distance_transform()`, `remove_small_pieces()` removes the
-/// detached pieces of the solid smaller than `small_piece_fraction` of the largest (a
-/// character's loose eyes or teeth): their mesh vertices map to the nearest point of the
-/// remaining skeleton, so the result has one tree per body. Between `thin()` and
-/// `prune_skeleton()`, `cut_spurious_cycles()` opens the cycles of the skeleton that the
-/// mesh has no handle for (where parts come within a voxel of each other, the solid joins
-/// them).
+/// Between `thin()` and `prune_skeleton()`, `remove_small_pieces()` removes the skeletons
+/// of the detached pieces whose solid is smaller than `small_piece_fraction` of the largest
+/// (a character's loose eyes or teeth): their mesh vertices map to the nearest point of the
+/// remaining skeleton, so the result has one tree per body; then `cut_spurious_cycles()`
+/// opens the cycles of the skeleton that the mesh has no handle for (where parts come
+/// within a voxel of each other, the solid joins them).
 ///
 /// The result is in the mesh's own coordinates and does not change (beyond the rounding
 /// of coordinates) when the mesh is rotated or moved, since the grid follows the mesh's
@@ -240,9 +239,6 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   report.voxel_size = solid.frame().voxel_size();
   clock.finished("voxelize");
 
-  report.small_pieces = remove_small_pieces(solid, np);
-  clock.finished("remove_small_pieces");
-
   const Voxel_distance_field distances = distance_transform(solid, np);
   clock.finished("distance_transform");
 
@@ -270,6 +266,9 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   else
     report.thinned = internal::skeleton_statistics_of_voxels(skeleton);
   clock.finished("thinned_graph");
+
+  report.small_pieces = remove_small_pieces(skeleton, distances, np);
+  clock.finished("remove_small_pieces");
 
   report.spurious_cycles_cut = internal::cut_spurious_cycles_impl(skeleton, mesh, mesh_lines);
   clock.finished("cut_spurious_cycles");

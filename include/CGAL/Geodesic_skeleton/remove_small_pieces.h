@@ -5,9 +5,10 @@
 #define CGAL_GEODESIC_SKELETON_REMOVE_SMALL_PIECES_H
 
 /// \file remove_small_pieces.h
-/// Removes the small detached pieces of a solid (a character's loose eyes, teeth, buttons)
-/// so that the skeleton has one tree per body.
+/// Removes the skeletons of the small detached pieces of a solid (a character's loose eyes,
+/// teeth, buttons), so that the skeleton has one tree per body.
 
+#include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
@@ -27,103 +28,174 @@ namespace Geodesic_skeleton {
 /// What `remove_small_pieces()` found.
 struct Small_pieces_report
 {
-  std::size_t pieces = 0;         ///< 26-connected components of the solid
+  std::size_t pieces = 0;         ///< 26-connected pieces of the skeleton
   std::size_t removed_pieces = 0; ///< the small ones, removed
-  std::size_t removed_voxels = 0; ///< their voxels
+  std::size_t removed_voxels = 0; ///< their skeleton voxels
 };
 
-/// \ingroup PkgGeodesicSkeletonRef
-/// Removes from a solid its small detached pieces: the 26-connected components with fewer
-/// than `small_piece_fraction` times the voxels of the largest one. A character as artists
-/// make it has parts that float free of the body (eyes, teeth, a buckle, strands of hair);
-/// each would otherwise get its own little skeleton tree. Pieces that overlap or touch the
-/// body (within a voxel) are part of its component already and stay. In
-/// `extract_control_skeleton()`, the mesh vertices of a removed piece map to the nearest
-/// point of the body's skeleton, so that the piece follows the body it belongs to.
-///
-/// \tparam VoxelSet a model of `VoxelSet`.
-/// \param voxels the solid (`voxelize()`); the small pieces leave it.
-/// \param np optional named parameters among:
-///   - `small_piece_fraction` (package parameter, `double`, in [0, 1]): the size, relative
-///     to the largest piece, under which a piece is removed (default 0.05; 0 keeps every
-///     piece).
-///   - `memory_limit` (package parameter, `double`, bytes): the most memory the function
-///     may allocate (default: 2 GiB); the need, 4 bytes per voxel of the set's box, is
-///     checked before allocating.
-///
-/// \returns the number of pieces and what was removed.
-/// \throws std::invalid_argument when `small_piece_fraction` is out of range.
-/// \throws std::length_error when the work array would need more than `memory_limit`.
-///
-/// \b Complexity: O(N + B) for N voxels in the set and B in its box.
-template <typename VoxelSet, typename NamedParameters = CGAL::parameters::Default_named_parameters>
-Small_pieces_report remove_small_pieces(VoxelSet& voxels,
-                                        const NamedParameters& np = CGAL::parameters::default_values())
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const char* caller = "remove_small_pieces";
-  const double fraction = internal::checked_parameter(
-      parameter_ranges::small_piece_fraction,
-      choose_parameter(get_parameter(np, internal_np::small_piece_fraction_tag),
-                       parameter_ranges::small_piece_fraction.default_value),
-      caller);
-  Small_pieces_report report;
-  if(voxels.size() == 0)
-    return report;
-  const internal::Grid_layout layout(internal::require_nonempty_box(voxels, 1, caller));
-  internal::require_memory(4. * double(layout.volume()), internal::memory_limit(np, caller), layout, caller,
-                           "the pieces of a solid in a box");
+namespace internal {
 
-  // Label the 26-connected components by a flood from each unlabelled voxel.
-  std::vector<std::int32_t> piece(layout.volume(), -1);
-  const std::int32_t unlabelled = -2;
-  voxels.for_each([&](const Voxel_key& k) { piece[layout.index(k)] = unlabelled; });
-  std::vector<std::size_t> sizes;
-  std::vector<std::uint32_t> stack;
-  const auto offsets = layout.neighbour_offsets();
-  voxels.for_each([&](const Voxel_key& k) {
-    const std::size_t start = layout.index(k);
-    if(piece[start] != unlabelled)
-      return;
-    const std::int32_t label = std::int32_t(sizes.size());
-    sizes.push_back(0);
-    piece[start] = label;
-    stack.push_back(std::uint32_t(start));
+// The 26-connected components of a voxel set: a label per voxel of `keys` (in that order)
+// and the number of components, by a search through the set's own membership test.
+template <typename VoxelSet>
+std::size_t voxel_components(const VoxelSet& voxels, const std::vector<Voxel_key>& keys,
+                             std::vector<std::size_t>& label)
+{
+  std::vector<std::size_t> order(keys.size());
+  for(std::size_t i = 0; i < keys.size(); ++i)
+    order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return keys[a] < keys[b]; });
+  auto position = [&](const Voxel_key& k) {
+    const auto it = std::lower_bound(order.begin(), order.end(), k,
+                                     [&](std::size_t i, const Voxel_key& key) { return keys[i] < key; });
+    return *it;
+  };
+  const std::size_t none = std::size_t(-1);
+  label.assign(keys.size(), none);
+  std::size_t components = 0;
+  std::vector<std::size_t> stack;
+  for(std::size_t start = 0; start < keys.size(); ++start)
+  {
+    if(label[start] != none)
+      continue;
+    label[start] = components;
+    stack.push_back(start);
     while(!stack.empty())
     {
       const std::size_t i = stack.back();
       stack.pop_back();
-      ++sizes.back();
-      for(std::ptrdiff_t o : offsets) // the margin of one voxel keeps neighbours in the box
+      for(const Voxel_key& o : neighbourhood_26())
       {
-        const std::size_t j = std::size_t(std::ptrdiff_t(i) + o);
-        if(piece[j] == unlabelled)
+        const Voxel_key n = keys[i] + o;
+        if(!voxels.contains(n))
+          continue;
+        const std::size_t j = position(n);
+        if(label[j] == none)
         {
-          piece[j] = label;
-          stack.push_back(std::uint32_t(j));
+          label[j] = components;
+          stack.push_back(j);
         }
       }
     }
-  });
-  report.pieces = sizes.size();
+    ++components;
+  }
+  return components;
+}
+
+// The number of voxels of the solid of `distances` (its non-zero voxels) in the
+// 26-connected component of each seed, by a search from each seed not yet reached.
+inline std::vector<std::size_t> solid_piece_sizes(const Voxel_distance_field& distances,
+                                                  const std::vector<Voxel_key>& seeds)
+{
+  const Grid_layout layout(distances.box());
+  std::vector<std::int32_t> piece(layout.volume(), -1);
+  std::vector<std::size_t> sizes(seeds.size(), 0), size_of_piece;
+  std::vector<std::uint32_t> stack;
+  for(std::size_t s = 0; s < seeds.size(); ++s)
+  {
+    if(!distances.inside(seeds[s]))
+      continue;
+    const std::size_t start = layout.index(seeds[s]);
+    if(piece[start] < 0)
+    {
+      const std::int32_t label = std::int32_t(size_of_piece.size());
+      size_of_piece.push_back(0);
+      piece[start] = label;
+      stack.push_back(std::uint32_t(start));
+      while(!stack.empty())
+      {
+        const Voxel_key k = layout.key(stack.back());
+        stack.pop_back();
+        ++size_of_piece.back();
+        for(const Voxel_key& o : neighbourhood_26())
+        {
+          const Voxel_key n = k + o;
+          if(!distances.inside(n)) // false outside the box too
+            continue;
+          const std::size_t j = layout.index(n);
+          if(piece[j] < 0)
+          {
+            piece[j] = label;
+            stack.push_back(std::uint32_t(j));
+          }
+        }
+      }
+    }
+    sizes[s] = size_of_piece[std::size_t(piece[start])];
+  }
+  return sizes;
+}
+
+} // namespace internal
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// Removes from a voxel skeleton its small detached pieces: the 26-connected pieces whose
+/// solid (the voxels of the distance field's solid connected to them) has fewer than
+/// `small_piece_fraction` times the voxels of the largest piece's solid. A character as
+/// artists make it has parts that float free of the body (eyes, teeth, a buckle, strands of
+/// hair); each would otherwise get its own little skeleton tree. Pieces that overlap or
+/// touch the body (within a voxel) are part of its solid already and stay. In
+/// `extract_control_skeleton()` (between `thin()` and `cut_spurious_cycles()`), the mesh
+/// vertices of a removed piece then map to the nearest point of the body's skeleton, so that
+/// the piece follows the body it belongs to.
+///
+/// \tparam VoxelSet a model of `VoxelSet`.
+/// \param skeleton a voxel skeleton (`thin()`); the small pieces leave it.
+/// \param distances the distance field of the solid it was thinned from
+///        (`distance_transform()`): its non-zero voxels are the solid.
+/// \param np optional named parameters among:
+///   - `small_piece_fraction` (package parameter, `double`, in [0, 1]): the size, relative
+///     to the largest piece, under which a piece is removed (default 0.05; 0 keeps every
+///     piece).
+///
+/// \returns the number of pieces and what was removed.
+/// \throws std::invalid_argument when `small_piece_fraction` is out of range.
+///
+/// \b Complexity: O(S log S) for S skeleton voxels when the skeleton is in one piece;
+///    otherwise O(S log S + B) for B voxels in the field's box.
+template <typename VoxelSet, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Small_pieces_report remove_small_pieces(VoxelSet& skeleton, const Voxel_distance_field& distances,
+                                        const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const double fraction = internal::checked_parameter(
+      parameter_ranges::small_piece_fraction,
+      choose_parameter(get_parameter(np, internal_np::small_piece_fraction_tag),
+                       parameter_ranges::small_piece_fraction.default_value),
+      "remove_small_pieces");
+  Small_pieces_report report;
+  std::vector<Voxel_key> keys;
+  keys.reserve(skeleton.size());
+  skeleton.for_each([&](const Voxel_key& k) { keys.push_back(k); });
+  std::vector<std::size_t> piece_of;
+  report.pieces = internal::voxel_components(skeleton, keys, piece_of);
+  if(report.pieces <= 1 || fraction == 0)
+    return report;
+
+  // One seed per piece: its first voxel.
+  std::vector<Voxel_key> seeds(report.pieces);
+  std::vector<bool> seeded(report.pieces, false);
+  for(std::size_t i = 0; i < keys.size(); ++i)
+    if(!seeded[piece_of[i]])
+    {
+      seeded[piece_of[i]] = true;
+      seeds[piece_of[i]] = keys[i];
+    }
+  const std::vector<std::size_t> sizes = internal::solid_piece_sizes(distances, seeds);
   const std::size_t largest = *std::max_element(sizes.begin(), sizes.end());
-  std::vector<bool> small(sizes.size());
-  for(std::size_t p = 0; p < sizes.size(); ++p)
+  std::vector<bool> small(report.pieces);
+  for(std::size_t p = 0; p < report.pieces; ++p)
   {
     small[p] = double(sizes[p]) < fraction * double(largest);
     report.removed_pieces += small[p];
   }
-  if(report.removed_pieces == 0)
-    return report;
-  std::vector<Voxel_key> removed;
-  voxels.for_each([&](const Voxel_key& k) {
-    if(small[std::size_t(piece[layout.index(k)])])
-      removed.push_back(k);
-  });
-  for(const Voxel_key& k : removed)
-    voxels.erase(k);
-  report.removed_voxels = removed.size();
+  for(std::size_t i = 0; i < keys.size(); ++i)
+    if(small[piece_of[i]])
+    {
+      skeleton.erase(keys[i]);
+      ++report.removed_voxels;
+    }
   return report;
 }
 

@@ -98,119 +98,67 @@ struct Line_hit
   int sign;
 };
 
-// A triangle soup (grid coordinates) ready for the crossings of lines parallel to the grid
-// axes: per axis, the triangles that cover each cell (a voxel wide) of the two other
-// coordinates
-// (compressed rows), built on first use, so that a line visits only the triangles of its
-// cell. Building an axis costs O(F + cells covered); a line costs O(triangles of its cell).
+// A triangle soup (grid coordinates) and the crossings of lines parallel to the grid axes
+// with it. Each call buckets its lines by unit cell of the two other coordinates; each
+// triangle then looks up the cells its box covers (one to four, for triangles about a voxel
+// wide) and tests only the lines there. A call costs O(F + L + C) for F triangles, L lines
+// and C candidate pairs; the triangles far from every line cost a box and a few lookups.
 class Grid_line_crossings
 {
 public:
-  explicit Grid_line_crossings(std::vector<Triangle3> g) : m_g(std::move(g))
-  {
-    for(const Triangle3& t : m_g)
-      for(const Vec3& p : t)
-        for(int d = 0; d < 3; ++d)
-          if(std::isfinite(p[d]))
-          {
-            m_lo[d] = (std::min)(m_lo[d], floor_to_long(cell_scale * p[d]));
-            m_hi[d] = (std::max)(m_hi[d], floor_to_long(cell_scale * p[d]));
-          }
-  }
+  explicit Grid_line_crossings(std::vector<Triangle3> g) : m_g(std::move(g)) {}
 
   // The crossings of each line (u, v) parallel to `axis`, sorted along the line.
-  std::vector<std::vector<Line_hit>> crossings(int axis, const std::vector<std::array<double, 2>>& lines)
+  std::vector<std::vector<Line_hit>> crossings(int axis, const std::vector<std::array<double, 2>>& lines) const
   {
     std::vector<std::vector<Line_hit>> hits(lines.size());
-    if(m_g.empty() || m_lo[0] > m_hi[0])
+    if(lines.empty())
       return hits;
-    const Cells& cells = cells_of(axis);
+    long lo[2] = {LONG_MAX, LONG_MAX}, hi[2] = {LONG_MIN, LONG_MIN};
+    for(const auto& l : lines)
+      for(int d = 0; d < 2; ++d)
+      {
+        lo[d] = (std::min)(lo[d], floor_to_long(l[d]));
+        hi[d] = (std::max)(hi[d], floor_to_long(l[d]));
+      }
+    const std::size_t nu = std::size_t(hi[0] - lo[0] + 1), nv = std::size_t(hi[1] - lo[1] + 1);
+    std::vector<std::int32_t> first(nu * nv, -1), next(lines.size(), -1);
     for(std::size_t i = 0; i < lines.size(); ++i)
     {
-      const double cu = double(floor_to_long(cell_scale * lines[i][0]) - cells.lo_u);
-      const double cv = double(floor_to_long(cell_scale * lines[i][1]) - cells.lo_v);
-      if(!(cu >= 0 && cv >= 0 && cu < double(cells.nu) && cv < double(cells.nv)))
-        continue;
-      const std::size_t cell = std::size_t(cv) * cells.nu + std::size_t(cu);
-      const double pu = lines[i][0], pv = lines[i][1];
-      for(std::uint32_t k = cells.start[cell]; k < cells.start[cell + 1]; ++k)
-      {
-        // Triangles are small next to a cell: most miss the line, which their box tells.
-        const auto& box = cells.boxes[k];
-        if(pu < box[0] || pu > box[1] || pv < box[2] || pv > box[3])
-          continue;
-        const Projected_triangle pt(m_g[cells.triangles[k]], axis);
-        double at;
-        if(pt.crossing(pu, pv, at))
-          hits[i].push_back(Line_hit{at, pt.sign()});
-      }
-      std::sort(hits[i].begin(), hits[i].end(), [](const Line_hit& x, const Line_hit& y) { return x.at < y.at; });
+      const std::size_t cell = std::size_t(floor_to_long(lines[i][1]) - lo[1]) * nu +
+                               std::size_t(floor_to_long(lines[i][0]) - lo[0]);
+      next[i] = first[cell];
+      first[cell] = std::int32_t(i);
     }
+    const int b = (axis + 1) % 3, c = (axis + 2) % 3;
+    for(const Triangle3& t : m_g)
+    {
+      const double u_min = (std::min)({t[0][b], t[1][b], t[2][b]}), u_max = (std::max)({t[0][b], t[1][b], t[2][b]});
+      const double v_min = (std::min)({t[0][c], t[1][c], t[2][c]}), v_max = (std::max)({t[0][c], t[1][c], t[2][c]});
+      if(!(u_max >= double(lo[0]) && u_min < double(hi[0] + 1) && v_max >= double(lo[1]) && v_min < double(hi[1] + 1)))
+        continue; // far from every line (or not finite)
+      const long from_u = (std::max)(lo[0], floor_to_long(u_min)), to_u = (std::min)(hi[0], floor_to_long(u_max));
+      const long from_v = (std::max)(lo[1], floor_to_long(v_min)), to_v = (std::min)(hi[1], floor_to_long(v_max));
+      for(long cv = from_v; cv <= to_v; ++cv)
+        for(long cu = from_u; cu <= to_u; ++cu)
+          for(std::int32_t i = first[std::size_t(cv - lo[1]) * nu + std::size_t(cu - lo[0])]; i >= 0; i = next[i])
+          {
+            const double pu = lines[std::size_t(i)][0], pv = lines[std::size_t(i)][1];
+            if(pu < u_min || pu > u_max || pv < v_min || pv > v_max)
+              continue;
+            const Projected_triangle pt(t, axis);
+            double at;
+            if(pt.crossable() && pt.crossing(pu, pv, at))
+              hits[std::size_t(i)].push_back(Line_hit{at, pt.sign()});
+          }
+    }
+    for(auto& h : hits)
+      std::sort(h.begin(), h.end(), [](const Line_hit& x, const Line_hit& y) { return x.at < y.at; });
     return hits;
   }
 
 private:
-  // Cells per voxel along each axis. Finer cells make each line test fewer triangles but
-  // each triangle cover more cells; at the resolutions the package uses, triangles are about
-  // a voxel wide, and one cell per voxel builds fastest.
-  static constexpr double cell_scale = 1.;
-
-  struct Cells
-  {
-    bool built = false;
-    long lo_u = 0, lo_v = 0;
-    std::size_t nu = 0, nv = 0;
-    std::vector<std::uint32_t> start, triangles;
-    std::vector<std::array<double, 4>> boxes; // of each triangle listed: u min, u max, v min, v max
-  };
-
-  const Cells& cells_of(int axis)
-  {
-    Cells& cells = m_cells[axis];
-    if(cells.built)
-      return cells;
-    cells.built = true;
-    const int b = (axis + 1) % 3, c = (axis + 2) % 3;
-    cells.lo_u = m_lo[b];
-    cells.lo_v = m_lo[c];
-    cells.nu = std::size_t(m_hi[b] - m_lo[b] + 1);
-    cells.nv = std::size_t(m_hi[c] - m_lo[c] + 1);
-    // The (cell, triangle) pairs of the footprints, then a counting sort by cell.
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-    pairs.reserve(4 * m_g.size());
-    for(std::size_t t = 0; t < m_g.size(); ++t)
-    {
-      const Triangle3& p = m_g[t];
-      const long u0 = floor_to_long(cell_scale * (std::min)({p[0][b], p[1][b], p[2][b]})) - cells.lo_u;
-      const long u1 = floor_to_long(cell_scale * (std::max)({p[0][b], p[1][b], p[2][b]})) - cells.lo_u;
-      const long v0 = floor_to_long(cell_scale * (std::min)({p[0][c], p[1][c], p[2][c]})) - cells.lo_v;
-      const long v1 = floor_to_long(cell_scale * (std::max)({p[0][c], p[1][c], p[2][c]})) - cells.lo_v;
-      for(long v = v0; v <= v1; ++v)
-        for(long u = u0; u <= u1; ++u)
-          pairs.emplace_back(std::uint32_t(std::size_t(v) * cells.nu + std::size_t(u)), std::uint32_t(t));
-    }
-    cells.start.assign(cells.nu * cells.nv + 1, 0);
-    for(const auto& pr : pairs)
-      ++cells.start[pr.first + 1];
-    for(std::size_t k = 1; k < cells.start.size(); ++k)
-      cells.start[k] += cells.start[k - 1];
-    cells.triangles.resize(pairs.size());
-    cells.boxes.resize(pairs.size());
-    std::vector<std::uint32_t> fill(cells.start.begin(), cells.start.end() - 1);
-    for(const auto& pr : pairs)
-    {
-      const Triangle3& p = m_g[pr.second];
-      const std::uint32_t k = fill[pr.first]++;
-      cells.triangles[k] = pr.second;
-      cells.boxes[k] = {(std::min)({p[0][b], p[1][b], p[2][b]}), (std::max)({p[0][b], p[1][b], p[2][b]}),
-                        (std::min)({p[0][c], p[1][c], p[2][c]}), (std::max)({p[0][c], p[1][c], p[2][c]})};
-    }
-    return cells;
-  }
-
   std::vector<Triangle3> m_g;
-  long m_lo[3] = {LONG_MAX, LONG_MAX, LONG_MAX}, m_hi[3] = {LONG_MIN, LONG_MIN, LONG_MIN};
-  Cells m_cells[3];
 };
 
 // Whether the crossings of a line sum to zero: then the winding number is well defined
@@ -242,7 +190,7 @@ enum class Point_side : std::uint8_t { outside, inside, undecided };
 // is not zero, of either sign (so overlapping parts and inverted components are inside),
 // along the first axis whose line through the point is balanced; undecided where no line
 // is (a point in line with gaps of an open surface along all three axes).
-inline std::vector<Point_side> sides_of_points(Grid_line_crossings& g, const std::vector<Vec3>& points)
+inline std::vector<Point_side> sides_of_points(const Grid_line_crossings& g, const std::vector<Vec3>& points)
 {
   std::vector<Point_side> side(points.size(), Point_side::undecided);
   std::vector<std::size_t> pending(points.size());
@@ -282,10 +230,9 @@ enum class Inside_piece_choice { longest, nearest };
 // pieces of these (balanced) lines that are both in the cube and inside the surface, the
 // midpoint of the longest (the deepest point in the thinnest direction the lines sample),
 // or the midpoint nearest the centre. The axes are tried in turn, the next one only for the
-// cubes where the lines so far found nothing (or, for the longest, only pieces shorter than
-// 1/3 voxel). `found[i]` is false where no line has such a piece
+// cubes where the lines so far found nothing. `found[i]` is false where no line has such a piece
 // (the surface only grazes the cube, or is thinner than the lines' spacing there).
-inline std::vector<Vec3> inside_points_in_cubes(Grid_line_crossings& g, const std::vector<Vec3>& centres,
+inline std::vector<Vec3> inside_points_in_cubes(const Grid_line_crossings& g, const std::vector<Vec3>& centres,
                                                 double half_width, Inside_piece_choice choice,
                                                 std::vector<bool>& found)
 {
@@ -338,11 +285,10 @@ inline std::vector<Vec3> inside_points_in_cubes(Grid_line_crossings& g, const st
         }
       }
     }
-    // The other axes only for the cubes where this one found nothing, or (choosing the
-    // longest piece) only a piece shorter than the lines' spacing: a part seen edge-on.
+    // The other axes only for the cubes where this one found nothing.
     std::vector<std::size_t> still;
     for(std::size_t i : pending)
-      if(!found[i] || (choice == Inside_piece_choice::longest && best_score[i] < 1. / 3))
+      if(!found[i])
         still.push_back(i);
     pending.swap(still);
   }
