@@ -8,12 +8,10 @@
 
 #include <CGAL/Geodesic_skeleton.h>
 
+#include "read_mesh.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
-#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -139,36 +137,6 @@ bool ends_with(const std::string& s, const std::string& suffix)
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-// Reads any mesh CGAL reads. A file that is not a clean manifold (as artists' meshes often
-// are) is read as a polygon soup, repaired, oriented and turned into a mesh.
-Mesh read_mesh(const std::string& path)
-{
-  std::ifstream probe(path);
-  if(!probe)
-    throw Usage_error(path + ": cannot open the file");
-  Mesh mesh;
-  if(CGAL::IO::read_polygon_mesh(path, mesh) && !is_empty(mesh))
-    return mesh;
-  std::vector<Point> points;
-  std::vector<std::vector<std::size_t>> polygons;
-  if(!CGAL::IO::read_polygon_soup(path, points, polygons))
-    throw Usage_error(path + ": the file cannot be parsed as a mesh (OFF, OBJ, PLY, STL, ...)");
-  for(const Point& p : points)
-    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-      throw Usage_error(path + ": a vertex has a non-finite coordinate (NaN or infinite)");
-  for(const auto& polygon : polygons)
-    for(std::size_t i : polygon)
-      if(i >= points.size())
-        throw Usage_error(path + ": a face refers to a vertex that does not exist");
-  PMP::repair_polygon_soup(points, polygons);
-  PMP::orient_polygon_soup(points, polygons);
-  mesh.clear();
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-  if(num_faces(mesh) == 0)
-    throw Usage_error(path + ": the mesh has no faces");
-  return mesh;
-}
-
 nlohmann::json stage_json(const gs::Skeleton_statistics& s)
 {
   return {{"points", s.points}, {"end_points", s.end_points}, {"junctions", s.junctions}, {"cycles", s.cycles}};
@@ -205,7 +173,7 @@ int run(const Options& o)
   if(o.svg_stage != "control" && o.svg_stage != "pruned" && o.svg_stage != "thinned" && o.svg_stage != "reeb")
     throw Usage_error("--svg-stage must be control, pruned, thinned or reeb, got '" + o.svg_stage + "'");
 
-  const Mesh mesh = read_mesh(o.input);
+  const Mesh mesh = skeletonize::read_mesh<Mesh>(o.input);
   gs::Curve_skeleton<Point, vertex_descriptor> curve, thinned;
   gs::Reeb_graph<Mesh> reeb;
   gs::Control_skeleton<Point> control;
