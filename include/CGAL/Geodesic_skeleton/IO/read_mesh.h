@@ -8,6 +8,8 @@
 /// Reads a mesh file as `skeletonize` does: any format CGAL reads, repaired when it is not
 /// a clean manifold, with a clear error for a file that holds no usable mesh.
 
+#include <CGAL/Geodesic_skeleton/IO/internal/mesh_file_checks.h>
+
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -73,7 +75,10 @@ inline bool binary_STL_has_non_finite_coordinate(const std::string& path)
 /// meshes often are: non-manifold edges or vertices, duplicated faces, inconsistent
 /// orientation) is read as a polygon soup, repaired (`repair_polygon_soup()`: duplicated
 /// and degenerate polygons go), oriented (`orient_polygon_soup()`: non-manifold vertices and
-/// edges are split) and turned into a mesh.
+/// edges are split) and turned into a mesh. Before CGAL's readers see it, a PLY header and
+/// an ASCII OFF file are checked for what those readers trust (element and face counts,
+/// face sizes and indices, property types, colours): files the package's fuzzer found to
+/// crash, hang or overrun them are refused with the reason (see `fuzz/README.md`).
 ///
 /// \tparam PolygonMesh a model of `MutableFaceGraph` with a vertex point map
 ///         (`Surface_mesh`, `Polyhedron_3`, ...).
@@ -95,6 +100,12 @@ void read_mesh(const std::string& path, PolygonMesh& mesh)
     fail("cannot open the file");
   if(internal::binary_STL_has_non_finite_coordinate(path))
     fail("a vertex has a non-finite coordinate (NaN or infinite)");
+  if(internal::file_extension(path) == "ply")
+    if(const std::string problem = internal::ply_header_problem(path); !problem.empty())
+      fail("the file cannot be parsed as a mesh: " + problem);
+  if(internal::file_extension(path) == "off")
+    if(const std::string problem = internal::off_file_problem(path); !problem.empty())
+      fail("the file cannot be parsed as a mesh: " + problem);
   // Read the soup first, so that its indices and coordinates are checked before CGAL builds
   // anything from them (a face index past the vertices would be read out of bounds).
   std::vector<Point> points;
