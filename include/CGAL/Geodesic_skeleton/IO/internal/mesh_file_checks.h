@@ -122,6 +122,43 @@ inline bool off_colour_is_readable(const std::vector<double>& e, std::size_t fir
   return true;
 }
 
+// CGAL 5.5's OFF header reader (File_header_OFF_impl.h) reads the three counts as int and
+// doubles the edge count (signed overflow past 2^30: undefined behaviour), before any check
+// of the file's lines could run; found by fuzzing (fuzz/regressions/off_huge_edge_count.off).
+// This reads the header's keyword and counts as text first (a binary OFF file's counts are
+// checked by CGAL's own reading) and returns what is wrong, or an empty string.
+inline std::string off_header_counts_problem(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::vector<std::string> tokens;
+  std::string line;
+  while(tokens.size() < 6 && std::getline(in, line))
+  {
+    std::istringstream words(line.substr(0, line.find('#')));
+    std::string word;
+    while(tokens.size() < 6 && words >> word)
+      tokens.push_back(word);
+  }
+  if(tokens.empty() || tokens[0].find("OFF") == std::string::npos)
+    return std::string(); // not an OFF header: CGAL refuses the file itself
+  std::size_t first_count = 1;
+  if(tokens.size() > 1 && tokens[1] == "BINARY")
+    return std::string();
+  if(tokens[0].find("nOFF") != std::string::npos)
+    ++first_count; // the dimension comes first
+  const double largest = double(1 << 30);
+  for(std::size_t i = first_count; i < first_count + 3 && i < tokens.size(); ++i)
+  {
+    std::istringstream number(tokens[i]);
+    double value = 0;
+    if(!(number >> value))
+      return std::string(); // not a number: CGAL refuses it
+    if(!(value >= 0 && value <= largest))
+      return "the OFF header's counts must be in [0, 2^30], got " + tokens[i];
+  }
+  return std::string();
+}
+
 // CGAL 5.5's OFF reader (CGAL/IO/OFF.h, File_scanner_OFF.h) trusts the file: it resizes
 // its arrays to the counts of the header (a few bytes can ask for terabytes: bad_alloc),
 // casts face sizes and indices read as doubles to std::size_t (-2 or 1e30: undefined
@@ -133,6 +170,8 @@ inline bool off_colour_is_readable(const std::vector<double>& e, std::size_t fir
 // for a binary OFF file).
 inline std::string off_file_problem(const std::string& path)
 {
+  if(const std::string problem = off_header_counts_problem(path); !problem.empty())
+    return problem;
   std::ifstream in(path, std::ios::binary);
   in.seekg(0, std::ios::end);
   const double file_size = double(in.tellg());
