@@ -123,10 +123,12 @@ inline bool off_colour_is_readable(const std::vector<double>& e, std::size_t fir
 }
 
 // CGAL 5.5's OFF header reader (File_header_OFF_impl.h) reads the three counts as int and
-// doubles the edge count (signed overflow past 2^30: undefined behaviour), before any check
-// of the file's lines could run; found by fuzzing (fuzz/regressions/off_huge_edge_count.off).
-// This reads the header's keyword and counts as text first (a binary OFF file's counts are
-// checked by CGAL's own reading) and returns what is wrong, or an empty string.
+// derives a halfedge count from them in int arithmetic: twice the edge count, or 2.1 times
+// (vertices + faces + 10), which overflow past about 10^9 (undefined behaviour), before any
+// check of the file's lines could run; found by fuzzing (fuzz/regressions/off_huge_*.off).
+// This reads the header's keyword and counts as text first and bounds each count and the
+// sum of the vertex and face counts by 2^28 (a binary OFF file's counts, which follow the
+// keyword in binary, are left to CGAL). Returns what is wrong, or an empty string.
 inline std::string off_header_counts_problem(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
@@ -146,7 +148,8 @@ inline std::string off_header_counts_problem(const std::string& path)
     return std::string();
   if(tokens[0].find("nOFF") != std::string::npos)
     ++first_count; // the dimension comes first
-  const double largest = double(1 << 30);
+  const double largest = double(1 << 28);
+  double vertices_and_faces = 0;
   for(std::size_t i = first_count; i < first_count + 3 && i < tokens.size(); ++i)
   {
     std::istringstream number(tokens[i]);
@@ -154,8 +157,12 @@ inline std::string off_header_counts_problem(const std::string& path)
     if(!(number >> value))
       return std::string(); // not a number: CGAL refuses it
     if(!(value >= 0 && value <= largest))
-      return "the OFF header's counts must be in [0, 2^30], got " + tokens[i];
+      return "the OFF header's counts must be in [0, 2^28], got " + tokens[i];
+    if(i < first_count + 2)
+      vertices_and_faces += value;
   }
+  if(vertices_and_faces > largest)
+    return "the OFF header announces more than 2^28 vertices and faces";
   return std::string();
 }
 
