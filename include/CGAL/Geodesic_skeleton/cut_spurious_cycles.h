@@ -9,6 +9,7 @@
 /// voxelization makes where two parts come within a voxel of each other.
 
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
+#include <CGAL/Geodesic_skeleton/internal/disjoint_sets.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_line_crossings.h>
 #include <CGAL/Geodesic_skeleton/internal/mesh_triangles.h>
@@ -30,31 +31,6 @@
 namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
-
-// Connected components by union-find over integer ids.
-class Disjoint_sets
-{
-public:
-  explicit Disjoint_sets(std::size_t n) : m_parent(n) { std::iota(m_parent.begin(), m_parent.end(), std::size_t(0)); }
-  std::size_t find(std::size_t a)
-  {
-    while(m_parent[a] != a)
-      a = m_parent[a] = m_parent[m_parent[a]];
-    return a;
-  }
-  bool unite(std::size_t a, std::size_t b)
-  {
-    a = find(a);
-    b = find(b);
-    if(a == b)
-      return false;
-    m_parent[b] = a;
-    return true;
-  }
-
-private:
-  std::vector<std::size_t> m_parent;
-};
 
 // The number of handles the mesh's surface has: the sum over its connected components of
 // the genus (2 - chi) / 2 of the component with each hole capped by a disc (chi = V - E + F

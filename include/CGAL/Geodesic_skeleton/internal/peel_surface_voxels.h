@@ -9,6 +9,7 @@
 // of the others can leave the solid without losing a thin part (see voxelize()'s doc).
 
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
+#include <CGAL/Geodesic_skeleton/internal/disjoint_sets.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_line_crossings.h>
 #include <CGAL/Geodesic_skeleton/internal/principal_frame.h>
@@ -135,31 +136,6 @@ inline bool vote_along_lines(const std::vector<std::array<Vec3, 3>>& g, int axis
 // cavity or tunnel opened) and Simple_point_test::object_is_split() (T26 >= 2). Removals
 // that pass the first may still disconnect the object or cut a handle: those are the
 // removals peel_surface_voxels wants, and it restores the connections it must keep.
-
-struct Union_find
-{
-  std::vector<std::uint32_t> parent;
-  std::uint32_t add()
-  {
-    parent.push_back(std::uint32_t(parent.size()));
-    return parent.back();
-  }
-  std::uint32_t find(std::uint32_t a)
-  {
-    while(parent[a] != a)
-      a = parent[a] = parent[parent[a]];
-    return a;
-  }
-  bool unite(std::uint32_t a, std::uint32_t b)
-  {
-    a = find(a);
-    b = find(b);
-    if(a == b)
-      return false;
-    parent[b] = a;
-    return true;
-  }
-};
 
 // Turns the labels left by the flood (EMPTY, SURFACE, FAN, OUTSIDE) into the solid: on
 // return, a voxel is in the solid iff its label is neither OUTSIDE nor REMOVED. `g` holds
@@ -341,7 +317,7 @@ inline void peel_surface_voxels(const std::vector<std::array<Vec3, 3>>& g, const
   //    for the near candidates reached by the linking search, the voxel they came from.
   const std::uint32_t none = std::uint32_t(-1);
   std::vector<std::uint32_t> owner(volume, none);
-  Union_find components;
+  Disjoint_sets components;
   auto kept_label = [](std::uint8_t l) { return l == CORE || l == FAR || l == NEAR_1 || l == NEAR_2 || l == CORE_SURFACE; };
   // Only components that touch a near candidate matter; grow those from the near ones.
   for(std::uint32_t i : near)
@@ -350,7 +326,7 @@ inline void peel_surface_voxels(const std::vector<std::array<Vec3, 3>>& g, const
       const std::size_t start_voxel = std::size_t(std::ptrdiff_t(i) + o);
       if(!kept_label(labels[start_voxel]) || owner[start_voxel] != none)
         continue;
-      const std::uint32_t id = components.add();
+      const std::uint32_t id = std::uint32_t(components.add());
       owner[start_voxel] = id;
       stack.push_back(std::uint32_t(start_voxel));
       while(!stack.empty())
@@ -447,10 +423,10 @@ inline void peel_surface_voxels(const std::vector<std::array<Vec3, 3>>& g, const
         if(!kept_label(labels[j]))
           continue;
         if(root == none)
-          root = components.find(owner[j]);
+          root = std::uint32_t(components.find(owner[j]));
         else if(components.unite(root, owner[j]))
         {
-          root = components.find(root);
+          root = std::uint32_t(components.find(root));
           keep_path(link.a);
         }
       }
