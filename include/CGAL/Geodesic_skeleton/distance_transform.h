@@ -33,17 +33,26 @@ inline void lower_envelope_pass(std::uint32_t* data, std::size_t n, std::ptrdiff
                                 std::vector<double>& z)
 {
   constexpr std::uint32_t infinity = 0xFFFFFFFFu;
-  bool all_zero = true;
+  std::int64_t first = -1, last = -1; // the first and last samples that are not 0
   for(std::size_t q = 0; q < n; ++q)
   {
     const std::uint32_t value = data[std::ptrdiff_t(q) * stride];
     f[q] = value == infinity ? -1 : std::int64_t(value);
-    all_zero = all_zero && value == 0;
+    if(value != 0)
+    {
+      last = std::int64_t(q);
+      if(first < 0)
+        first = last;
+    }
   }
-  if(all_zero)
+  if(first < 0)
     return; // a line outside the solid stays at 0
+  // A 0 sample is its own nearest, and hides the samples beyond it from the others: only
+  // [first - 1, last + 1] needs the envelope, the 0s around it stay.
+  const std::int64_t from = (std::max)(first - 1, std::int64_t(0));
+  const std::int64_t to = (std::min)(last + 2, std::int64_t(n));
   std::ptrdiff_t k = -1;
-  for(std::int64_t q = 0; q < std::int64_t(n); ++q)
+  for(std::int64_t q = from; q < to; ++q)
   {
     if(f[q] < 0)
       continue;
@@ -64,7 +73,7 @@ inline void lower_envelope_pass(std::uint32_t* data, std::size_t n, std::ptrdiff
   if(k < 0)
     return; // no finite sample: the line stays infinite
   std::ptrdiff_t j = 0;
-  for(std::int64_t q = 0; q < std::int64_t(n); ++q)
+  for(std::int64_t q = from; q < to; ++q)
   {
     while(j < k && z[j + 1] < double(q))
       ++j;

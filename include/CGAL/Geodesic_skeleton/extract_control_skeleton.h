@@ -234,7 +234,8 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   internal::check_control_skeleton_parameters(np, "extract_control_skeleton");
 
   Dense_voxel_grid solid;
-  report.solid_voxels = voxelize(mesh, solid, np);
+  std::vector<internal::Triangle3> grid_triangles;
+  report.solid_voxels = internal::voxelize_impl(mesh, solid, np, &grid_triangles);
   report.resolution = choose_parameter(get_parameter(np, internal_np::resolution_tag), default_voxel_resolution);
   report.voxel_size = solid.frame().voxel_size();
   clock.finished("voxelize");
@@ -249,13 +250,14 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   clock.finished("thin");
 
   // The mesh's faces in the grid, for the inside tests of cut_spurious_cycles() and
-  // to_graph(): built once, when first needed.
+  // to_graph(): the triangles that voxelize() rasterised.
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, mesh));
   const double memory_limit = internal::memory_limit(np);
   internal::Lazy_mesh_grid_lines<FaceGraph, decltype(vpm)> mesh_lines(
       mesh, vpm, solid.frame(), choose_parameter(get_parameter(np, internal_np::fill_holes_tag), true),
       "extract_control_skeleton");
+  mesh_lines.use_grid_triangles(std::move(grid_triangles));
   if constexpr(!is_default_parameter<NamedParameters, internal_np::thinned_skeleton_output_t>::value)
   {
     Skeleton thinned;

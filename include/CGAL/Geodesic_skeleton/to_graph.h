@@ -35,47 +35,68 @@ namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
 
-// Labels every voxel of the solid of `distances` (and the skeleton's own voxels) with the
-// skeleton node whose 26-connected breadth-first wave through the solid reaches it first:
-// the nearest skeleton voxel along paths inside the shape. -1 where no wave arrives.
-inline std::vector<std::int32_t> nearest_node_inside(const Voxel_distance_field& distances,
-                                                     const Grid_layout& layout,
-                                                     const std::vector<Voxel_key>& nodes)
+// For every voxel of the solid of `distances` (and the skeleton's own voxels): the skeleton
+// node whose 26-connected breadth-first wave through the solid reaches it first, the
+// nearest skeleton voxel along paths inside the shape.
+class Nearest_node_inside
 {
-  std::vector<std::int32_t> label(layout.volume(), -1);
-  std::vector<std::uint32_t> queue;
-  queue.reserve(nodes.size());
-  for(std::size_t v = 0; v < nodes.size(); ++v)
-    if(layout.box.contains(nodes[v]))
-    {
-      const std::size_t i = layout.index(nodes[v]);
-      if(label[i] < 0)
-      {
-        label[i] = std::int32_t(v);
-        queue.push_back(std::uint32_t(i));
-      }
-    }
-  const auto& values = distances.values();
-  const auto offsets = layout.neighbour_offsets();
-  for(std::size_t head = 0; head < queue.size(); ++head)
+public:
+  Nearest_node_inside(const Voxel_distance_field& distances, const std::vector<Voxel_key>& nodes)
+    : m_layout(distances.box().grown(1))
   {
-    const std::size_t i = queue[head];
-    const bool border = layout.on_border(i);
-    const Voxel_key k = border ? layout.key(i) : Voxel_key{};
-    for(int b = 0; b < 26; ++b)
-    {
-      if(border && !layout.box.contains(k + neighbourhood_26()[b]))
-        continue;
-      const std::size_t j = std::size_t(std::ptrdiff_t(i) + offsets[b]);
-      if(label[j] < 0 && values[j] != 0)
+    // Over the field's box grown by one voxel, so that the wave needs no bounds check:
+    // BLOCKED outside the solid (and on the added layer), UNREACHED in it.
+    m_label.assign(m_layout.volume(), BLOCKED);
+    const Grid_layout field(distances.box());
+    const auto& values = distances.values();
+    for(std::size_t z = 0; z < field.nz; ++z)
+      for(std::size_t y = 0; y < field.ny; ++y)
       {
-        label[j] = label[i];
-        queue.push_back(std::uint32_t(j));
+        const std::uint32_t* from = values.data() + z * std::size_t(field.stride_z) + y * field.nx;
+        std::int32_t* to = m_label.data() + m_layout.index(Voxel_key{field.box.min.x, field.box.min.y + int(y),
+                                                                     field.box.min.z + int(z)});
+        for(std::size_t x = 0; x < field.nx; ++x)
+          to[x] = from[x] != 0 ? UNREACHED : BLOCKED;
+      }
+    std::vector<std::uint32_t> queue;
+    queue.reserve(nodes.size());
+    for(std::size_t v = 0; v < nodes.size(); ++v)
+      if(distances.box().contains(nodes[v]))
+      {
+        const std::size_t i = m_layout.index(nodes[v]);
+        if(m_label[i] < 0)
+        {
+          m_label[i] = std::int32_t(v);
+          queue.push_back(std::uint32_t(i));
+        }
+      }
+    const auto offsets = m_layout.neighbour_offsets();
+    for(std::size_t head = 0; head < queue.size(); ++head)
+    {
+      const std::size_t i = queue[head];
+      for(std::ptrdiff_t o : offsets)
+      {
+        const std::size_t j = std::size_t(std::ptrdiff_t(i) + o);
+        if(m_label[j] == UNREACHED)
+        {
+          m_label[j] = m_label[i];
+          queue.push_back(std::uint32_t(j));
+        }
       }
     }
   }
-  return label;
-}
+
+  // The node that reaches `k` first, or -1 where no wave arrives (outside the solid).
+  std::int32_t operator()(const Voxel_key& k) const
+  {
+    return m_layout.box.contains(k) ? (std::max)(m_label[m_layout.index(k)], std::int32_t(-1)) : -1;
+  }
+
+private:
+  static constexpr std::int32_t UNREACHED = -1, BLOCKED = -2;
+  Grid_layout m_layout;
+  std::vector<std::int32_t> m_label;
+};
 
 // The points of the skeleton nodes in world coordinates: each voxel's centre, or, where the
 // centre lies outside the mesh (a part thinner than about two voxels, whose skeleton runs
@@ -141,7 +162,7 @@ void to_graph_impl(const VoxelSet& skeleton, const Voxel_distance_field& distanc
 
   const Voxel_box skeleton_box = require_nonempty_box(skeleton, 1, caller);
   const Grid_layout nodes_layout(skeleton_box);
-  const Grid_layout solid_layout(distances.box());
+  const Grid_layout solid_layout(distances.box().grown(1)); // as Nearest_node_inside needs it
   require_memory(4. * double(nodes_layout.volume() + solid_layout.volume()), memory_limit, nodes_layout,
                  caller, "the graph of a skeleton in a box");
 
@@ -163,7 +184,7 @@ void to_graph_impl(const VoxelSet& skeleton, const Voxel_distance_field& distanc
     add_edge(e.first, e.second, graph);
 
   // Mesh vertices.
-  const std::vector<std::int32_t> label = nearest_node_inside(distances, solid_layout, nodes);
+  const Nearest_node_inside nearest_node(distances, nodes);
   for(auto mv : vertices(mesh))
   {
     const auto& p = get(vpm, mv);
@@ -175,14 +196,14 @@ void to_graph_impl(const VoxelSet& skeleton, const Voxel_distance_field& distanc
     if(std::abs(g[0]) < 1e9 && std::abs(g[1]) < 1e9 && std::abs(g[2]) < 1e9)
     {
       const Voxel_key k = frame.voxel_of(q);
-      if(distances.box().contains(k))
-        best = label[solid_layout.index(k)];
+      best = nearest_node(k);
       double best_d2 = std::numeric_limits<double>::infinity();
       if(best < 0)
         for(const Voxel_key& o : neighbourhood_26())
         {
           const Voxel_key n = k + o;
-          if(!distances.box().contains(n) || label[solid_layout.index(n)] < 0)
+          const std::int32_t label = nearest_node(n);
+          if(label < 0)
             continue;
           const double d2 = (g[0] - n.x - 0.5) * (g[0] - n.x - 0.5) +
                             (g[1] - n.y - 0.5) * (g[1] - n.y - 0.5) +
@@ -190,7 +211,7 @@ void to_graph_impl(const VoxelSet& skeleton, const Voxel_distance_field& distanc
           if(d2 < best_d2)
           {
             best_d2 = d2;
-            best = label[solid_layout.index(n)];
+            best = label;
           }
         }
     }

@@ -109,56 +109,138 @@ inline void rasterize(const std::vector<Triangle3>& g, std::size_t first, std::s
 }
 
 // Labels OUTSIDE every EMPTY voxel 6-connected to the border of the box through EMPTY
-// voxels (a 6-path cannot cross a conservatively rasterised surface). The empty border
-// voxels are labelled first; the stack then holds only voxels off the border, whose six
-// neighbours are in the box, so the inner loop needs no bounds check.
+// voxels (a 6-path cannot cross a conservatively rasterised surface). A scanline fill: a
+// seed grows into the whole run of EMPTY voxels along x that holds it, and the runs of the
+// four neighbouring rows (y +- 1, z +- 1) that touch it are seeded in turn. Seeds: every
+// EMPTY run of the rows on the box's faces, and the two end voxels of the other rows.
 inline void flood_outside(const Grid_layout& layout, std::vector<std::uint8_t>& labels)
 {
-  std::vector<std::uint32_t> stack;
-  const std::ptrdiff_t steps[6] = {1, -1, layout.stride_y, -layout.stride_y, layout.stride_z,
-                                   -layout.stride_z};
-  std::vector<std::uint32_t> border;
-  for(std::size_t z = 0; z < layout.nz; ++z)
-    for(std::size_t y = 0; y < layout.ny; ++y)
+  const std::size_t nx = layout.nx, ny = layout.ny, nz = layout.nz;
+  std::vector<std::uint32_t> seeds; // indices of EMPTY voxels, each the start of a run to fill
+  auto seed_runs = [&](std::size_t row_start, std::size_t from, std::size_t to) {
+    // Seeds the EMPTY runs of the row that meet [from, to].
+    const std::uint8_t* row = labels.data() + row_start;
+    for(std::size_t x = from; x <= to; ++x)
+      if(row[x] == EMPTY && (x == from || row[x - 1] != EMPTY))
+        seeds.push_back(std::uint32_t(row_start + x));
+  };
+  for(std::size_t z = 0; z < nz; ++z)
+    for(std::size_t y = 0; y < ny; ++y)
     {
-      const bool whole_row = z == 0 || y == 0 || z + 1 == layout.nz || y + 1 == layout.ny;
-      const std::size_t row = (z * layout.ny + y) * layout.nx;
-      for(std::size_t x = 0; x < layout.nx; x += (whole_row || x + 1 == layout.nx) ? 1 : layout.nx - 1)
-        if(labels[row + x] == EMPTY)
-        {
-          labels[row + x] = OUTSIDE;
-          border.push_back(std::uint32_t(row + x));
-        }
-    }
-  for(std::uint32_t i : border)
-  {
-    const Voxel_key k = layout.key(i);
-    for(const Voxel_key& o : neighbourhood_26())
-    {
-      if(offset_order(o) != 1 || !layout.box.contains(k + o))
-        continue;
-      const std::size_t j = layout.index(k + o);
-      if(labels[j] == EMPTY) // necessarily off the border
+      const std::size_t row_start = (z * ny + y) * nx;
+      if(z == 0 || y == 0 || z + 1 == nz || y + 1 == ny)
+        seed_runs(row_start, 0, nx - 1);
+      else
       {
-        labels[j] = OUTSIDE;
-        stack.push_back(std::uint32_t(j));
+        seed_runs(row_start, 0, 0);
+        seed_runs(row_start, nx - 1, nx - 1);
       }
     }
-  }
-  while(!stack.empty())
+  while(!seeds.empty())
   {
-    const std::size_t i = stack.back();
-    stack.pop_back();
-    for(std::ptrdiff_t s : steps)
-    {
-      const std::size_t j = std::size_t(std::ptrdiff_t(i) + s);
-      if(labels[j] == EMPTY)
-      {
-        labels[j] = OUTSIDE;
-        stack.push_back(std::uint32_t(j));
-      }
-    }
+    const std::size_t i = seeds.back();
+    seeds.pop_back();
+    if(labels[i] != EMPTY)
+      continue; // filled since it was seeded
+    const std::size_t row_start = i - i % nx, yz = i / nx, y = yz % ny, z = yz / ny;
+    std::uint8_t* row = labels.data() + row_start;
+    std::size_t from = i - row_start, to = from;
+    while(from > 0 && row[from - 1] == EMPTY)
+      --from;
+    while(to + 1 < nx && row[to + 1] == EMPTY)
+      ++to;
+    std::fill(row + from, row + to + 1, std::uint8_t(OUTSIDE));
+    if(y > 0)
+      seed_runs(row_start - nx, from, to);
+    if(y + 1 < ny)
+      seed_runs(row_start + nx, from, to);
+    if(z > 0)
+      seed_runs(row_start - nx * ny, from, to);
+    if(z + 1 < nz)
+      seed_runs(row_start + nx * ny, from, to);
   }
+}
+
+// voxelize(), which also hands over, when `grid_triangles_out` is not null, the triangles
+// it rasterised (the faces and hole-filling fans, in the grid coordinates of the voxels'
+// frame), for the later inside tests of the pipeline.
+template <typename FaceGraph, typename VoxelSet, typename NamedParameters>
+std::size_t voxelize_impl(const FaceGraph& mesh, VoxelSet& voxels, const NamedParameters& np,
+                          std::vector<Triangle3>* grid_triangles_out)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const char* caller = "voxelize";
+
+  const int resolution = internal::checked_parameter(
+      parameter_ranges::resolution,
+      choose_parameter(get_parameter(np, internal_np::resolution_tag), default_voxel_resolution), caller);
+  const bool fill_holes =
+      choose_parameter(get_parameter(np, internal_np::fill_holes_tag), true);
+  const bool keep_surface_voxels =
+      choose_parameter(get_parameter(np, internal_np::keep_surface_voxels_tag), true);
+  internal::memory_limit(np, caller); // checked before any work
+
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, mesh));
+  std::vector<internal::Triangle3> triangles = internal::mesh_triangles(mesh, vpm, caller);
+
+  Voxel_box box;
+  const Voxel_frame frame = internal::grid_frame(triangles, resolution, 1, box, caller);
+  const std::size_t mesh_triangle_count = triangles.size();
+  if(fill_holes)
+    internal::close_holes(mesh, vpm, triangles);
+  const internal::Grid_layout layout(box);
+  internal::require_memory((keep_surface_voxels ? 6. : 11.) * double(layout.volume()),
+                           internal::memory_limit(np), layout, caller,
+                           "a grid (resolution " + std::to_string(resolution) + ")");
+
+  std::vector<std::uint8_t> labels(layout.volume(), internal::EMPTY);
+  std::vector<internal::Triangle3> grid_triangles = internal::to_grid(triangles, frame);
+  triangles.clear();
+  triangles.shrink_to_fit();
+  internal::rasterize(grid_triangles, 0, mesh_triangle_count, layout, internal::SURFACE, labels);
+  internal::rasterize(grid_triangles, mesh_triangle_count, grid_triangles.size(), layout,
+                      internal::FAN, labels);
+  internal::flood_outside(layout, labels);
+
+  Voxel_box solid_box;
+  std::size_t enclosed = 0;
+  for(std::size_t i = 0; i < labels.size(); ++i)
+    if(labels[i] != internal::OUTSIDE)
+    {
+      solid_box.extend(layout.key(i));
+      enclosed += labels[i] == internal::EMPTY;
+    }
+  if(enclosed == 0)
+  {
+    std::ostringstream msg;
+    msg << caller << ": the mesh encloses no volume at resolution " << resolution
+        << " (an open sheet, a surface with holes wider than a voxel, or a shape thinner "
+           "than a voxel); close the mesh or raise the resolution";
+    throw std::invalid_argument(msg.str());
+  }
+
+  if(!keep_surface_voxels)
+  {
+    internal::peel_surface_voxels(grid_triangles, layout, labels);
+    solid_box = Voxel_box();
+    for(std::size_t i = 0; i < labels.size(); ++i)
+      if(labels[i] != internal::OUTSIDE && labels[i] != internal::REMOVED)
+        solid_box.extend(layout.key(i));
+  }
+
+  voxels.reset(frame, solid_box);
+  std::size_t count = 0;
+  for(std::size_t i = 0; i < labels.size(); ++i)
+    if(labels[i] != internal::OUTSIDE && labels[i] != internal::REMOVED)
+    {
+      voxels.insert(layout.key(i));
+      ++count;
+    }
+  if(grid_triangles_out != nullptr)
+    *grid_triangles_out = std::move(grid_triangles);
+  return count;
 }
 
 } // namespace internal
@@ -271,77 +353,7 @@ template <typename FaceGraph, typename VoxelSet,
 std::size_t voxelize(const FaceGraph& mesh, VoxelSet& voxels,
                      const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const char* caller = "voxelize";
-
-  const int resolution = internal::checked_parameter(
-      parameter_ranges::resolution,
-      choose_parameter(get_parameter(np, internal_np::resolution_tag), default_voxel_resolution), caller);
-  const bool fill_holes =
-      choose_parameter(get_parameter(np, internal_np::fill_holes_tag), true);
-  const bool keep_surface_voxels =
-      choose_parameter(get_parameter(np, internal_np::keep_surface_voxels_tag), true);
-  internal::memory_limit(np, caller); // checked before any work
-
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, mesh));
-  std::vector<internal::Triangle3> triangles = internal::mesh_triangles(mesh, vpm, caller);
-
-  Voxel_box box;
-  const Voxel_frame frame = internal::grid_frame(triangles, resolution, 1, box, caller);
-  const std::size_t mesh_triangle_count = triangles.size();
-  if(fill_holes)
-    internal::close_holes(mesh, vpm, triangles);
-  const internal::Grid_layout layout(box);
-  internal::require_memory((keep_surface_voxels ? 6. : 11.) * double(layout.volume()),
-                           internal::memory_limit(np), layout, caller,
-                           "a grid (resolution " + std::to_string(resolution) + ")");
-
-  std::vector<std::uint8_t> labels(layout.volume(), internal::EMPTY);
-  const std::vector<internal::Triangle3> grid_triangles = internal::to_grid(triangles, frame);
-  triangles.clear();
-  triangles.shrink_to_fit();
-  internal::rasterize(grid_triangles, 0, mesh_triangle_count, layout, internal::SURFACE, labels);
-  internal::rasterize(grid_triangles, mesh_triangle_count, grid_triangles.size(), layout,
-                      internal::FAN, labels);
-  internal::flood_outside(layout, labels);
-
-  Voxel_box solid_box;
-  std::size_t enclosed = 0;
-  for(std::size_t i = 0; i < labels.size(); ++i)
-    if(labels[i] != internal::OUTSIDE)
-    {
-      solid_box.extend(layout.key(i));
-      enclosed += labels[i] == internal::EMPTY;
-    }
-  if(enclosed == 0)
-  {
-    std::ostringstream msg;
-    msg << caller << ": the mesh encloses no volume at resolution " << resolution
-        << " (an open sheet, a surface with holes wider than a voxel, or a shape thinner "
-           "than a voxel); close the mesh or raise the resolution";
-    throw std::invalid_argument(msg.str());
-  }
-
-  if(!keep_surface_voxels)
-  {
-    internal::peel_surface_voxels(grid_triangles, layout, labels);
-    solid_box = Voxel_box();
-    for(std::size_t i = 0; i < labels.size(); ++i)
-      if(labels[i] != internal::OUTSIDE && labels[i] != internal::REMOVED)
-        solid_box.extend(layout.key(i));
-  }
-
-  voxels.reset(frame, solid_box);
-  std::size_t count = 0;
-  for(std::size_t i = 0; i < labels.size(); ++i)
-    if(labels[i] != internal::OUTSIDE && labels[i] != internal::REMOVED)
-    {
-      voxels.insert(layout.key(i));
-      ++count;
-    }
-  return count;
+  return internal::voxelize_impl(mesh, voxels, np, nullptr);
 }
 
 } // namespace Geodesic_skeleton

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -98,22 +99,75 @@ struct Line_hit
   int sign;
 };
 
+// The crossings of one line, sorted along it: a view into a Line_hits.
+class Hit_range
+{
+public:
+  Hit_range(const Line_hit* first, const Line_hit* last) : m_first(first), m_last(last) {}
+  const Line_hit* begin() const { return m_first; }
+  const Line_hit* end() const { return m_last; }
+  std::size_t size() const { return std::size_t(m_last - m_first); }
+  bool empty() const { return m_first == m_last; }
+  const Line_hit& operator[](std::size_t k) const { return m_first[k]; }
+
+private:
+  const Line_hit* m_first;
+  const Line_hit* m_last;
+};
+
+// The crossings of a batch of lines, stored one line after the other (one allocation for
+// the batch, not one per line).
+class Line_hits
+{
+public:
+  Line_hits(std::vector<std::uint32_t> first, std::vector<Line_hit> hits)
+    : m_first(std::move(first)), m_hits(std::move(hits))
+  {}
+  std::size_t size() const { return m_first.size() - 1; }
+  Hit_range operator[](std::size_t line) const
+  {
+    return Hit_range(m_hits.data() + m_first[line], m_hits.data() + m_first[line + 1]);
+  }
+
+private:
+  std::vector<std::uint32_t> m_first; // line l's crossings are [m_first[l], m_first[l + 1])
+  std::vector<Line_hit> m_hits;
+};
+
 // A triangle soup (grid coordinates) and the crossings of lines parallel to the grid axes
-// with it. Each call buckets its lines by unit cell of the two other coordinates; each
-// triangle then looks up the cells its box covers (one to four, for triangles about a voxel
-// wide) and tests only the lines there. A call costs O(F + L + C) for F triangles, L lines
-// and C candidate pairs; the triangles far from every line cost a box and a few lookups.
+// with it. The unit cells that each triangle's box covers are computed once; each call
+// buckets its lines by unit cell of the two other coordinates, and each triangle looks up
+// the cells its box covers (one to four, for triangles about a voxel wide) and tests only
+// the lines there. A call costs O(F + L + C) for F triangles, L lines and C candidate
+// pairs, a triangle far from every line a few integer comparisons.
 class Grid_line_crossings
 {
 public:
-  explicit Grid_line_crossings(std::vector<Triangle3> g) : m_g(std::move(g)) {}
+  explicit Grid_line_crossings(std::vector<Triangle3> g) : m_g(std::move(g)), m_cells(m_g.size())
+  {
+    for(std::size_t t = 0; t < m_g.size(); ++t)
+      for(int d = 0; d < 3; ++d)
+      {
+        const double lo = (std::min)({m_g[t][0][d], m_g[t][1][d], m_g[t][2][d]});
+        const double hi = (std::max)({m_g[t][0][d], m_g[t][1][d], m_g[t][2][d]});
+        if(!(std::abs(lo) < cell_bound && std::abs(hi) < cell_bound))
+        {
+          // Not finite, or far beyond any grid: no line of a grid crosses it.
+          m_cells[t].lo[d] = 1;
+          m_cells[t].hi[d] = 0;
+          continue;
+        }
+        m_cells[t].lo[d] = std::int32_t(floor_to_long(lo));
+        m_cells[t].hi[d] = std::int32_t(floor_to_long(hi));
+      }
+  }
 
   // The crossings of each line (u, v) parallel to `axis`, sorted along the line.
-  std::vector<std::vector<Line_hit>> crossings(int axis, const std::vector<std::array<double, 2>>& lines) const
+  Line_hits crossings(int axis, const std::vector<std::array<double, 2>>& lines) const
   {
-    std::vector<std::vector<Line_hit>> hits(lines.size());
+    std::vector<std::uint32_t> first_hit(lines.size() + 1, 0);
     if(lines.empty())
-      return hits;
+      return Line_hits(std::move(first_hit), {});
     long lo[2] = {LONG_MAX, LONG_MAX}, hi[2] = {LONG_MIN, LONG_MIN};
     for(const auto& l : lines)
       for(int d = 0; d < 2; ++d)
@@ -131,39 +185,72 @@ public:
       first[cell] = std::int32_t(i);
     }
     const int b = (axis + 1) % 3, c = (axis + 2) % 3;
-    for(const Triangle3& t : m_g)
+    std::vector<std::pair<std::uint32_t, Line_hit>> found; // (line, crossing), by triangle
+    for(std::size_t t = 0; t < m_g.size(); ++t)
     {
-      const double u_min = (std::min)({t[0][b], t[1][b], t[2][b]}), u_max = (std::max)({t[0][b], t[1][b], t[2][b]});
-      const double v_min = (std::min)({t[0][c], t[1][c], t[2][c]}), v_max = (std::max)({t[0][c], t[1][c], t[2][c]});
-      if(!(u_max >= double(lo[0]) && u_min < double(hi[0] + 1) && v_max >= double(lo[1]) && v_min < double(hi[1] + 1)))
+      const Cell_box& cells = m_cells[t];
+      const long from_u = (std::max)(lo[0], long(cells.lo[b])), to_u = (std::min)(hi[0], long(cells.hi[b]));
+      const long from_v = (std::max)(lo[1], long(cells.lo[c])), to_v = (std::min)(hi[1], long(cells.hi[c]));
+      if(from_u > to_u || from_v > to_v)
         continue; // far from every line (or not finite)
-      const long from_u = (std::max)(lo[0], floor_to_long(u_min)), to_u = (std::min)(hi[0], floor_to_long(u_max));
-      const long from_v = (std::max)(lo[1], floor_to_long(v_min)), to_v = (std::min)(hi[1], floor_to_long(v_max));
+      const Triangle3& g = m_g[t];
+      bool boxed = false;                                 // the triangle's box, once a line is near
+      double u_min = 0, u_max = 0, v_min = 0, v_max = 0;
+      std::optional<Projected_triangle> pt;               // built once a line is in that box
       for(long cv = from_v; cv <= to_v; ++cv)
         for(long cu = from_u; cu <= to_u; ++cu)
           for(std::int32_t i = first[std::size_t(cv - lo[1]) * nu + std::size_t(cu - lo[0])]; i >= 0; i = next[i])
           {
+            if(!boxed)
+            {
+              boxed = true;
+              u_min = (std::min)({g[0][b], g[1][b], g[2][b]});
+              u_max = (std::max)({g[0][b], g[1][b], g[2][b]});
+              v_min = (std::min)({g[0][c], g[1][c], g[2][c]});
+              v_max = (std::max)({g[0][c], g[1][c], g[2][c]});
+            }
             const double pu = lines[std::size_t(i)][0], pv = lines[std::size_t(i)][1];
             if(pu < u_min || pu > u_max || pv < v_min || pv > v_max)
-              continue;
-            const Projected_triangle pt(t, axis);
+              continue; // most lines of the cells miss the box of a small triangle
+            if(!pt)
+              pt.emplace(g, axis);
             double at;
-            if(pt.crossable() && pt.crossing(pu, pv, at))
-              hits[std::size_t(i)].push_back(Line_hit{at, pt.sign()});
+            if(pt->crossable() && pt->crossing(pu, pv, at))
+              found.emplace_back(std::uint32_t(i), Line_hit{at, pt->sign()});
           }
     }
-    for(auto& h : hits)
-      std::sort(h.begin(), h.end(), [](const Line_hit& x, const Line_hit& y) { return x.at < y.at; });
-    return hits;
+    // By line (a counting sort, which keeps the triangles' order), then along each line.
+    for(const auto& f : found)
+      ++first_hit[f.first + 1];
+    for(std::size_t l = 0; l < lines.size(); ++l)
+      first_hit[l + 1] += first_hit[l];
+    std::vector<Line_hit> hits(found.size());
+    {
+      std::vector<std::uint32_t> fill(first_hit.begin(), first_hit.end() - 1);
+      for(const auto& f : found)
+        hits[fill[f.first]++] = f.second;
+    }
+    for(std::size_t l = 0; l < lines.size(); ++l)
+      std::sort(hits.begin() + first_hit[l], hits.begin() + first_hit[l + 1],
+                [](const Line_hit& x, const Line_hit& y) { return x.at < y.at; });
+    return Line_hits(std::move(first_hit), std::move(hits));
   }
 
 private:
+  // The unit cells [lo, hi] (integer parts of the coordinates) that a triangle's box covers.
+  struct Cell_box
+  {
+    std::int32_t lo[3], hi[3];
+  };
+  static constexpr double cell_bound = 1e9;
+
   std::vector<Triangle3> m_g;
+  std::vector<Cell_box> m_cells;
 };
 
 // Whether the crossings of a line sum to zero: then the winding number is well defined
 // along it (zero at both ends).
-inline bool is_balanced(const std::vector<Line_hit>& hits)
+inline bool is_balanced(const Hit_range& hits)
 {
   int total = 0;
   for(const Line_hit& h : hits)
@@ -172,7 +259,7 @@ inline bool is_balanced(const std::vector<Line_hit>& hits)
 }
 
 // The winding number of the surface around the point at `at` of a balanced line.
-inline int winding_before(const std::vector<Line_hit>& hits, double at)
+inline int winding_before(const Hit_range& hits, double at)
 {
   int winding = 0;
   for(const Line_hit& h : hits)

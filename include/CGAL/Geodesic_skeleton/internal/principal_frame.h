@@ -116,26 +116,32 @@ inline Principal_frame principal_frame(const std::vector<Triangle3>& world_trian
   Principal_frame frame;
   for(int c = 0; c < 3; ++c)
     frame.centroid[c] = centre[c] + size * centroid[c];
-  for(int a = 0; a < 2; ++a)
+  // Third moment along each of the first two axes (one pass for both): E[t^3] over a
+  // triangle is h3(t0, t1, t2) / 10, the complete homogeneous symmetric polynomial of
+  // degree 3 of its vertex values.
+  const Eigen::Vector3d axis[2] = {solver.eigenvectors().col(2).normalized(),
+                                   solver.eigenvectors().col(1).normalized()};
+  double third_moment[2] = {0, 0};
+  for(std::size_t i = 0; i < triangles.size(); ++i)
   {
-    Eigen::Vector3d axis = solver.eigenvectors().col(2 - a).normalized();
-    // Third moment along the axis: E[t^3] over a triangle is h3(t0, t1, t2) / 10, the
-    // complete homogeneous symmetric polynomial of degree 3 of its vertex values.
-    double third_moment = 0;
-    for(std::size_t i = 0; i < triangles.size(); ++i)
+    Eigen::Vector3d v[3];
+    for(int j = 0; j < 3; ++j)
+      v[j] = Eigen::Vector3d(triangles[i][j][0], triangles[i][j][1], triangles[i][j][2]) - centroid;
+    for(int a = 0; a < 2; ++a)
     {
       double t[3];
       for(int j = 0; j < 3; ++j)
-        t[j] = (Eigen::Vector3d(triangles[i][j][0], triangles[i][j][1], triangles[i][j][2]) -
-                centroid).dot(axis);
+        t[j] = v[j].dot(axis[a]);
       const double h3 = t[0] * t[0] * t[0] + t[1] * t[1] * t[1] + t[2] * t[2] * t[2] +
                         t[0] * t[0] * (t[1] + t[2]) + t[1] * t[1] * (t[0] + t[2]) +
                         t[2] * t[2] * (t[0] + t[1]) + t[0] * t[1] * t[2];
-      third_moment += areas[i] * h3 / 10.;
+      third_moment[a] += areas[i] * h3 / 10.;
     }
-    if(third_moment < 0)
-      axis = -axis;
-    frame.axes[a] = Vec3{axis[0], axis[1], axis[2]};
+  }
+  for(int a = 0; a < 2; ++a)
+  {
+    const Eigen::Vector3d oriented = third_moment[a] < 0 ? Eigen::Vector3d(-axis[a]) : axis[a];
+    frame.axes[a] = Vec3{oriented[0], oriented[1], oriented[2]};
   }
   frame.axes[2] = cross3(frame.axes[0], frame.axes[1]);
   const double norm = std::sqrt(dot3(frame.axes[2], frame.axes[2]));

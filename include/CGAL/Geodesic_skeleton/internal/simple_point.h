@@ -7,7 +7,6 @@
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 
 #include <array>
-#include <bitset>
 #include <cstdint>
 #include <cstdlib>
 
@@ -15,8 +14,15 @@ namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
 
-// Number of set bits of a neighbourhood mask.
-inline int bit_count(std::uint32_t mask) { return int(std::bitset<32>(mask).count()); }
+// Number of set bits of a neighbourhood mask (by halves, quarters, ...: without a library
+// call where the target has no popcount instruction).
+inline int bit_count(std::uint32_t mask)
+{
+  mask = mask - ((mask >> 1) & 0x55555555u);
+  mask = (mask & 0x33333333u) + ((mask >> 2) & 0x33333333u);
+  mask = (mask + (mask >> 4)) & 0x0F0F0F0Fu;
+  return int((mask * 0x01010101u) >> 24);
+}
 
 // Index of the lowest set bit of a non-zero mask.
 inline int lowest_bit(std::uint32_t mask)
@@ -41,8 +47,10 @@ inline int lowest_bit(std::uint32_t mask)
 //   T26(x, X)  = number of 26-components of X ∩ N26*(x)                       = 1, and
 //   T6(x, ~X)  = number of 6-components of ~X ∩ N18*(x) 6-adjacent to x       = 1.
 // A configuration is the 26-bit mask of the object in N26*(x), bit i for the neighbour
-// neighbourhood_26()[i]. Components are grown on the masks with precomputed adjacency
-// masks, so a test costs at most 26 + 18 mask steps: constant time, no table of 2^26.
+// neighbourhood_26()[i]. The tests grow components on the 3 x 3 x 3 cube as a 27-bit mask
+// (bit dx + 3 dy + 9 dz for the offset (dx, dy, dz) + 1), where one step of growth along
+// all neighbours is a handful of shifts: a test costs a few such steps, constant time, no
+// table of 2^26.
 class Simple_point_test
 {
 public:
@@ -56,17 +64,17 @@ public:
   {
     if(object == 0)
       return false; // an isolated voxel: removing it removes a component
-    const std::uint32_t background18 = ~object & m_n18;
-    const std::uint32_t background_faces = background18 & m_faces;
+    const std::uint32_t cube = to_cube(object);
+    const std::uint32_t background18 = ~cube & n18;
+    const std::uint32_t background_faces = background18 & faces;
     if(background_faces == 0)
       return false; // an interior voxel: removing it makes a cavity
     // T6: the 6-component of the background in N18* grown from one face neighbour must
     // hold every background face neighbour.
-    if(!grow(background_faces & (~background_faces + 1u), background18, m_adjacent6,
-             background_faces))
+    if(!grows_to(background_faces & (~background_faces + 1u), background18, background_faces, grow6))
       return false;
     // T26: the object in N26* is one 26-component.
-    return grow(object & (~object + 1u), object, m_adjacent26, object);
+    return grows_to(cube & (~cube + 1u), cube, cube, grow26);
   }
 
   // T6(x, ~X) = 1: the background in N18*(x) 6-adjacent to x is one 6-component. False
@@ -74,69 +82,68 @@ public:
   // where its removal would open a tunnel.
   bool background_is_one_piece(std::uint32_t object) const
   {
-    const std::uint32_t background18 = ~object & m_n18;
-    const std::uint32_t background_faces = background18 & m_faces;
-    return background_faces != 0 && grow(background_faces & (~background_faces + 1u), background18,
-                                         m_adjacent6, background_faces);
+    const std::uint32_t background18 = ~to_cube(object) & n18;
+    const std::uint32_t background_faces = background18 & faces;
+    return background_faces != 0 &&
+           grows_to(background_faces & (~background_faces + 1u), background18, background_faces, grow6);
   }
 
   // T26(x, X) >= 2: the object in N26*(x) falls into two 26-components or more.
   bool object_is_split(std::uint32_t object) const
   {
-    return object != 0 && !grow(object & (~object + 1u), object, m_adjacent26, object);
+    const std::uint32_t cube = to_cube(object);
+    return cube != 0 && !grows_to(cube & (~cube + 1u), cube, cube, grow26);
   }
-
-  // Whether bit i is a face neighbour.
-  std::uint32_t face_mask() const { return m_faces; }
 
 private:
-  Simple_point_test()
+  Simple_point_test() = default;
+
+  // Masks of the cube: every voxel; those not at x = 0, not at x = 2 (then y), where a
+  // shift by one step along +x, -x (then y) may land; the 18-neighbourhood and the 6 face
+  // neighbours of the centre (bit 13, never set in a configuration).
+  static constexpr std::uint32_t all = (1u << 27) - 1;
+  static constexpr std::uint32_t at_x0 = 0x1249249u;              // bits 0, 3, 6, ..., 24
+  static constexpr std::uint32_t at_y0 = 0x01C0E07u;              // bits 0-2, 9-11, 18-20
+  static constexpr std::uint32_t not_x0 = all & ~at_x0, not_x2 = all & ~(at_x0 << 2);
+  static constexpr std::uint32_t not_y0 = all & ~at_y0, not_y2 = all & ~(at_y0 << 6);
+  static constexpr std::uint32_t corners = (1u << 0) | (1u << 2) | (1u << 6) | (1u << 8) | (1u << 18) |
+                                           (1u << 20) | (1u << 24) | (1u << 26);
+  static constexpr std::uint32_t n18 = all & ~corners & ~(1u << 13);
+  static constexpr std::uint32_t faces = (1u << 4) | (1u << 10) | (1u << 12) | (1u << 14) | (1u << 16) | (1u << 22);
+
+  // A configuration (26 bits in neighbourhood_26() order) as a cube mask: the centre's bit
+  // 13 inserted.
+  static std::uint32_t to_cube(std::uint32_t object) { return (object & 0x1FFFu) | ((object & ~0x1FFFu) << 1); }
+
+  // One growth step: the set and its 6-neighbours (grow6), or its 26-neighbours (grow26),
+  // inside the cube.
+  static std::uint32_t grow6(std::uint32_t s)
   {
-    const auto& n = neighbourhood_26();
-    for(int i = 0; i < 26; ++i)
-    {
-      if(offset_order(n[i]) == 1)
-        m_faces |= 1u << i;
-      if(offset_order(n[i]) <= 2)
-        m_n18 |= 1u << i;
-      for(int j = 0; j < 26; ++j)
-      {
-        if(i == j || !are_26_adjacent(n[i], n[j]))
-          continue;
-        m_adjacent26[i] |= 1u << j;
-        const int manhattan = std::abs(n[i].x - n[j].x) + std::abs(n[i].y - n[j].y) +
-                              std::abs(n[i].z - n[j].z);
-        if(manhattan == 1 && offset_order(n[i]) <= 2 && offset_order(n[j]) <= 2)
-          m_adjacent6[i] |= 1u << j;
-      }
-    }
+    return s | ((s << 1) & not_x0) | ((s >> 1) & not_x2) | ((s << 3) & not_y0) | ((s >> 3) & not_y2) |
+           ((s << 9) & all) | (s >> 9);
+  }
+  static std::uint32_t grow26(std::uint32_t s)
+  {
+    s |= ((s << 1) & not_x0) | ((s >> 1) & not_x2);
+    s |= ((s << 3) & not_y0) | ((s >> 3) & not_y2);
+    return s | ((s << 9) & all) | (s >> 9);
   }
 
-  // Grows the component of `seed` inside `set` along `adjacent`; returns whether it covers
-  // `must_reach` (stops as soon as it does).
-  static bool grow(std::uint32_t seed, std::uint32_t set, const std::array<std::uint32_t, 26>& adjacent,
-                   std::uint32_t must_reach)
+  // Grows the component of `seed` inside `set`; returns whether it covers `must_reach`
+  // (stops as soon as it does, or when it stops growing).
+  template <typename Grow>
+  static bool grows_to(std::uint32_t seed, std::uint32_t set, std::uint32_t must_reach, Grow grow)
   {
-    std::uint32_t component = seed, frontier = seed;
-    while(frontier != 0)
+    std::uint32_t component = seed;
+    while((component & must_reach) != must_reach)
     {
-      if((component & must_reach) == must_reach)
-        return true;
-      std::uint32_t next = 0;
-      while(frontier != 0)
-      {
-        const int i = lowest_bit(frontier);
-        frontier &= frontier - 1;
-        next |= adjacent[i];
-      }
-      frontier = next & set & ~component;
-      component |= frontier;
+      const std::uint32_t grown = grow(component) & set;
+      if(grown == component)
+        return false;
+      component = grown;
     }
-    return (component & must_reach) == must_reach;
+    return true;
   }
-
-  std::uint32_t m_faces = 0, m_n18 = 0;
-  std::array<std::uint32_t, 26> m_adjacent26{}, m_adjacent6{};
 };
 
 } // namespace internal
