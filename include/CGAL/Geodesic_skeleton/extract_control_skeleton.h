@@ -234,8 +234,8 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   internal::check_control_skeleton_parameters(np, "extract_control_skeleton");
 
   Dense_voxel_grid solid;
-  std::vector<internal::Triangle3> grid_triangles;
-  report.solid_voxels = internal::voxelize_impl(mesh, solid, np, &grid_triangles);
+  internal::Rasterised_triangles rasterised;
+  report.solid_voxels = internal::voxelize_impl(mesh, solid, np, &rasterised);
   report.resolution = choose_parameter(get_parameter(np, internal_np::resolution_tag), default_voxel_resolution);
   report.voxel_size = solid.frame().voxel_size();
   clock.finished("voxelize");
@@ -257,7 +257,7 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   internal::Lazy_mesh_grid_lines<FaceGraph, decltype(vpm)> mesh_lines(
       mesh, vpm, solid.frame(), choose_parameter(get_parameter(np, internal_np::fill_holes_tag), true),
       "extract_control_skeleton");
-  mesh_lines.use_grid_triangles(std::move(grid_triangles));
+  mesh_lines.use_grid_triangles(std::move(rasterised.in_grid));
   if constexpr(!is_default_parameter<NamedParameters, internal_np::thinned_skeleton_output_t>::value)
   {
     Skeleton thinned;
@@ -290,7 +290,7 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   split_into_bones(curve, out, np);
   clock.finished("split_into_bones");
   report.joints_moved_inside = internal::move_joints_inside(
-      mesh, vpm, out, 0.25 * report.voxel_size, 2 * report.voxel_size);
+      mesh, std::move(rasterised.faces_in_world), out, 0.25 * report.voxel_size, 2 * report.voxel_size);
   clock.finished("joints_inside");
   if constexpr(!is_default_parameter<NamedParameters, internal_np::curve_skeleton_output_t>::value)
     *get_parameter(np, internal_np::curve_skeleton_output_tag) = std::move(curve);

@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -91,10 +92,13 @@ inline void rasterize(const std::vector<Triangle3>& g, std::size_t first, std::s
     {
       const double lo_c = (std::min)({c[0][a], c[1][a], c[2][a]});
       const double hi_c = (std::max)({c[0][a], c[1][a], c[2][a]});
-      from[a] = (std::max)(0, int(std::floor(lo_c - 1e-6)));
-      to[a] = (std::min)(hi[a], int(std::floor(hi_c + 1e-6)));
+      from[a] = int((std::max)(0L, floor_to_long(lo_c - 1e-6)));
+      to[a] = int((std::min)(long(hi[a]), floor_to_long(hi_c + 1e-6)));
     }
-    const bool single = from[0] == to[0] && from[1] == to[1] && from[2] == to[2];
+    // A triangle whose box is one voxel wide along two axes meets every voxel of its box
+    // (it is connected, and it runs through that row of voxels from end to end): no test.
+    const bool meets_whole_box = (from[0] != to[0]) + (from[1] != to[1]) + (from[2] != to[2]) <= 1;
+    std::optional<Triangle_cube_test> test; // set up at the first voxel that needs it
     for(int z = from[2]; z <= to[2]; ++z)
       for(int y = from[1]; y <= to[1]; ++y)
         for(int x = from[0]; x <= to[0]; ++x)
@@ -102,7 +106,9 @@ inline void rasterize(const std::vector<Triangle3>& g, std::size_t first, std::s
           const std::size_t i = layout.index(Voxel_key{x, y, z});
           if(labels[i] != EMPTY)
             continue;
-          if(single || triangle_meets_cube(c[0], c[1], c[2], Vec3{x + 0.5, y + 0.5, z + 0.5}, half))
+          if(!meets_whole_box && !test)
+            test.emplace(c[0], c[1], c[2], half);
+          if(meets_whole_box || test->meets(Vec3{x + 0.5, y + 0.5, z + 0.5}))
             labels[i] = label;
         }
   }
@@ -161,12 +167,11 @@ inline void flood_outside(const Grid_layout& layout, std::vector<std::uint8_t>& 
   }
 }
 
-// voxelize(), which also hands over, when `grid_triangles_out` is not null, the triangles
-// it rasterised (the faces and hole-filling fans, in the grid coordinates of the voxels'
-// frame), for the later inside tests of the pipeline.
+// voxelize(), which also hands over, when `rasterised` is not null, the triangles it
+// rasterised, for the later inside tests of the pipeline.
 template <typename FaceGraph, typename VoxelSet, typename NamedParameters>
 std::size_t voxelize_impl(const FaceGraph& mesh, VoxelSet& voxels, const NamedParameters& np,
-                          std::vector<Triangle3>* grid_triangles_out)
+                          Rasterised_triangles* rasterised)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -197,8 +202,12 @@ std::size_t voxelize_impl(const FaceGraph& mesh, VoxelSet& voxels, const NamedPa
 
   std::vector<std::uint8_t> labels(layout.volume(), internal::EMPTY);
   std::vector<internal::Triangle3> grid_triangles = internal::to_grid(triangles, frame);
-  triangles.clear();
-  triangles.shrink_to_fit();
+  triangles.resize(mesh_triangle_count); // the faces' (the fans' are only rasterised)
+  if(rasterised == nullptr)
+  {
+    triangles.clear();
+    triangles.shrink_to_fit();
+  }
   internal::rasterize(grid_triangles, 0, mesh_triangle_count, layout, internal::SURFACE, labels);
   internal::rasterize(grid_triangles, mesh_triangle_count, grid_triangles.size(), layout,
                       internal::FAN, labels);
@@ -238,8 +247,11 @@ std::size_t voxelize_impl(const FaceGraph& mesh, VoxelSet& voxels, const NamedPa
       voxels.insert(layout.key(i));
       ++count;
     }
-  if(grid_triangles_out != nullptr)
-    *grid_triangles_out = std::move(grid_triangles);
+  if(rasterised != nullptr)
+  {
+    rasterised->faces_in_world = std::move(triangles);
+    rasterised->in_grid = std::move(grid_triangles);
+  }
   return count;
 }
 

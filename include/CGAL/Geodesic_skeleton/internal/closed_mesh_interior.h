@@ -15,19 +15,35 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
 
-// Ray parity against a closed triangle soup: odd crossings along a ray means inside. Rays
-// go along the axes first, so that a triangle whose box misses the ray's line is skipped
-// with four comparisons. A ray that passes too near an edge or a vertex of a triangle
-// (where a crossing could be counted twice or missed) is dropped and another direction
-// tried. Costs O(F) per query: meant for the few points in doubt, where building a search
-// tree would cost more.
-inline bool is_inside_closed_soup(const Vec3& p, const std::vector<Triangle3>& triangles)
+// The box of a triangle.
+struct Triangle_box
+{
+  Vec3 lo, hi;
+  explicit Triangle_box(const Triangle3& t)
+  {
+    for(int a = 0; a < 3; ++a)
+    {
+      lo[a] = (std::min)({t[0][a], t[1][a], t[2][a]});
+      hi[a] = (std::max)({t[0][a], t[1][a], t[2][a]});
+    }
+  }
+};
+
+// Ray parity against a closed triangle soup (with the boxes of its triangles): odd
+// crossings along a ray means inside. Rays go along the axes first, so that a triangle
+// whose box misses the ray's line is skipped with a few comparisons. A ray that passes too
+// near an edge or a vertex of a triangle (where a crossing could be counted twice or
+// missed) is dropped and another direction tried. Costs O(F) per query: meant for the few
+// points in doubt, where building a search tree would cost more.
+inline bool is_inside_closed_soup(const Vec3& p, const std::vector<Triangle3>& triangles,
+                                  const std::vector<Triangle_box>& boxes)
 {
   static const Vec3 directions[5] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1},
                                      {0.5773502692, 0.5773502692, 0.5773502692},
@@ -37,16 +53,16 @@ inline bool is_inside_closed_soup(const Vec3& p, const std::vector<Triangle3>& t
     const Vec3& d = directions[axis];
     bool ambiguous = false;
     std::size_t crossings = 0;
-    for(const Triangle3& t : triangles)
+    for(std::size_t i = 0; i < triangles.size(); ++i)
     {
       if(axis < 3) // the ray runs along this axis: the other two coordinates must be covered
       {
         const int a = (axis + 1) % 3, b = (axis + 2) % 3;
-        if(p[a] < (std::min)({t[0][a], t[1][a], t[2][a]}) || p[a] > (std::max)({t[0][a], t[1][a], t[2][a]}) ||
-           p[b] < (std::min)({t[0][b], t[1][b], t[2][b]}) || p[b] > (std::max)({t[0][b], t[1][b], t[2][b]}) ||
-           p[axis] > (std::max)({t[0][axis], t[1][axis], t[2][axis]}))
+        const Triangle_box& box = boxes[i];
+        if(p[a] < box.lo[a] || p[a] > box.hi[a] || p[b] < box.lo[b] || p[b] > box.hi[b] || p[axis] > box.hi[axis])
           continue;
       }
+      const Triangle3& t = triangles[i];
       // Moeller-Trumbore: p + s d = t0 + u (t1 - t0) + v (t2 - t0).
       const Vec3 e1 = sub(t[1], t[0]), e2 = sub(t[2], t[0]);
       const Vec3 h = cross3(d, e2);
@@ -113,23 +129,16 @@ inline Vec3 closest_point_on_triangle(const Vec3& p, const Triangle3& t)
 class Closed_mesh_interior
 {
 public:
-  template <typename TriangleMesh, typename VertexPointMap>
-  Closed_mesh_interior(const TriangleMesh& mesh, VertexPointMap vpm)
+  // `face_triangles` are the faces of `mesh`, in world coordinates (mesh_triangles()).
+  template <typename TriangleMesh>
+  Closed_mesh_interior(const TriangleMesh& mesh, std::vector<Triangle3> face_triangles)
   {
     if(!CGAL::is_closed(mesh) || !CGAL::is_triangle_mesh(mesh))
       return;
-    m_triangles.reserve(static_cast<std::size_t>(num_faces(mesh)));
-    for(auto f : faces(mesh))
-    {
-      Triangle3 t;
-      int c = 0;
-      for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
-      {
-        const auto& p = get(vpm, v);
-        t[c++] = Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-      }
-      m_triangles.push_back(t);
-    }
+    m_triangles = std::move(face_triangles);
+    m_boxes.reserve(m_triangles.size());
+    for(const Triangle3& t : m_triangles)
+      m_boxes.emplace_back(t);
   }
 
   bool has_interior() const { return !m_triangles.empty(); }
@@ -139,7 +148,7 @@ public:
   // it moved; a point inside, or any point of a mesh without interior, stays.
   bool move_inside(Vec3& p, double depth) const
   {
-    if(!has_interior() || is_inside_closed_soup(p, m_triangles))
+    if(!has_interior() || is_inside_closed_soup(p, m_triangles, m_boxes))
       return false;
     Vec3 nearest = p;
     double best = std::numeric_limits<double>::infinity();
@@ -161,7 +170,7 @@ public:
     {
       const Vec3 candidate{nearest[0] + step * in[0] / length, nearest[1] + step * in[1] / length,
                            nearest[2] + step * in[2] / length};
-      if(is_inside_closed_soup(candidate, m_triangles))
+      if(is_inside_closed_soup(candidate, m_triangles, m_boxes))
       {
         p = candidate;
         return true;
@@ -172,6 +181,7 @@ public:
 
 private:
   std::vector<Triangle3> m_triangles;
+  std::vector<Triangle_box> m_boxes;
 };
 
 // Moves every joint that lies outside a closed triangle mesh (a limb thinner than a couple
@@ -180,16 +190,18 @@ private:
 // in doubt: a deeper one sits inside. The bones' end points follow their joints. Returns
 // how many joints moved.
 //
+// `face_triangles` are the faces of `mesh` in world coordinates (mesh_triangles()).
+//
 // Complexity: O(D F) for D doubtful joints and F faces (D is a handful: limb tips).
-template <typename TriangleMesh, typename VertexPointMap, typename Point>
-std::size_t move_joints_inside(const TriangleMesh& mesh, VertexPointMap vpm, Control_skeleton<Point>& control,
-                               double depth, double deep_radius)
+template <typename TriangleMesh, typename Point>
+std::size_t move_joints_inside(const TriangleMesh& mesh, std::vector<Triangle3> face_triangles,
+                               Control_skeleton<Point>& control, double depth, double deep_radius)
 {
   const bool doubt = std::any_of(control.joints.begin(), control.joints.end(),
                                  [&](const Control_joint<Point>& j) { return j.radius < deep_radius; });
   if(!doubt)
     return 0;
-  const Closed_mesh_interior interior(mesh, vpm);
+  const Closed_mesh_interior interior(mesh, std::move(face_triangles));
   std::size_t moved = 0;
   for(Control_joint<Point>& joint : control.joints)
   {

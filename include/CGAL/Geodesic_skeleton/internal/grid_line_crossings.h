@@ -85,13 +85,6 @@ struct Projected_triangle
   }
 };
 
-// floor() for coordinates of a grid (finite, far below 2^62), without a library call.
-inline long floor_to_long(double x)
-{
-  const long i = long(x);
-  return i - long(x < double(i));
-}
-
 // A crossing of a line: where along it, and +1 or -1 by the side the triangle faces.
 struct Line_hit
 {

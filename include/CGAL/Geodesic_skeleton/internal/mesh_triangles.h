@@ -107,6 +107,15 @@ std::size_t close_holes(const FaceGraph& mesh, VertexPointMap vpm, std::vector<T
   return holes;
 }
 
+// The triangles that voxelize() rasterised, for the later stages of the pipeline: the
+// faces' in world coordinates (as mesh_triangles() gives them), and all of them, the faces'
+// then the hole-filling fans', in the grid coordinates of the voxels' frame.
+struct Rasterised_triangles
+{
+  std::vector<Triangle3> faces_in_world;
+  std::vector<Triangle3> in_grid;
+};
+
 // The triangles in grid coordinates (`frame.to_grid` of their corners).
 inline std::vector<Triangle3> to_grid(const std::vector<Triangle3>& triangles, const Voxel_frame& frame)
 {

@@ -14,42 +14,71 @@ namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
 
-// Whether the triangle (a, b, c) meets the axis-aligned cube of centre `centre` and half
-// edge `half`: the separating axis theorem with the 13 candidate axes (3 cube normals, the
+// Whether a triangle meets axis-aligned cubes of half edge `half`, each given by its
+// centre: the separating axis theorem with the 13 candidate axes (3 cube normals, the
 // triangle normal, 9 cross products of cube and triangle edges), as in Akenine-Moller's
-// "Fast 3D triangle-box overlap testing" (2001). Touching counts as overlapping.
-inline bool triangle_meets_cube(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& centre,
-                                double half)
+// "Fast 3D triangle-box overlap testing" (2001). Touching counts as overlapping. What
+// depends only on the triangle (its box, normal, and its extent along each axis) is
+// computed once, so that testing a cube costs a few products per axis.
+class Triangle_cube_test
 {
-  const Vec3 v[3] = {sub(a, centre), sub(b, centre), sub(c, centre)};
-  // The cube's face normals: the triangle's bounding box against the cube.
-  for(int i = 0; i < 3; ++i)
+public:
+  Triangle_cube_test(const Vec3& a, const Vec3& b, const Vec3& c, double half) : m_half(half)
   {
-    const double lo = (std::min)({v[0][i], v[1][i], v[2][i]});
-    const double hi = (std::max)({v[0][i], v[1][i], v[2][i]});
-    if(lo > half || hi < -half)
-      return false;
-  }
-  const Vec3 e[3] = {sub(v[1], v[0]), sub(v[2], v[1]), sub(v[0], v[2])};
-  // The triangle's plane against the cube.
-  const Vec3 n = cross3(e[0], e[1]);
-  const double radius_n = half * (std::abs(n[0]) + std::abs(n[1]) + std::abs(n[2]));
-  if(std::abs(dot3(n, v[0])) > radius_n)
-    return false;
-  // The nine cross products of a cube axis with a triangle edge.
-  for(int i = 0; i < 3; ++i)
-    for(int axis = 0; axis < 3; ++axis)
+    const Vec3 v[3] = {a, b, c};
+    for(int i = 0; i < 3; ++i)
     {
-      Vec3 u{0., 0., 0.};
-      u[axis] = 1.;
-      const Vec3 l = cross3(u, e[i]);
-      const double p0 = dot3(l, v[0]), p1 = dot3(l, v[1]), p2 = dot3(l, v[2]);
-      const double r = half * (std::abs(l[0]) + std::abs(l[1]) + std::abs(l[2]));
-      if((std::min)({p0, p1, p2}) > r || (std::max)({p0, p1, p2}) < -r)
+      m_lo[i] = (std::min)({a[i], b[i], c[i]});
+      m_hi[i] = (std::max)({a[i], b[i], c[i]});
+    }
+    const Vec3 e[3] = {sub(b, a), sub(c, b), sub(a, c)};
+    m_normal = cross3(e[0], e[1]);
+    m_plane = dot3(m_normal, a);
+    m_normal_radius = half * (std::abs(m_normal[0]) + std::abs(m_normal[1]) + std::abs(m_normal[2]));
+    for(int i = 0; i < 3; ++i)
+      for(int axis = 0; axis < 3; ++axis)
+      {
+        Vec3 u{0., 0., 0.};
+        u[axis] = 1.;
+        Edge_axis& l = m_edge_axes[3 * i + axis];
+        l.direction = cross3(u, e[i]);
+        const double p0 = dot3(l.direction, v[0]), p1 = dot3(l.direction, v[1]), p2 = dot3(l.direction, v[2]);
+        l.lo = (std::min)({p0, p1, p2});
+        l.hi = (std::max)({p0, p1, p2});
+        l.radius = half * (std::abs(l.direction[0]) + std::abs(l.direction[1]) + std::abs(l.direction[2]));
+      }
+  }
+
+  bool meets(const Vec3& centre) const
+  {
+    // The cube's face normals: the triangle's bounding box against the cube.
+    for(int i = 0; i < 3; ++i)
+      if(m_lo[i] - centre[i] > m_half || m_hi[i] - centre[i] < -m_half)
+        return false;
+    // The triangle's plane against the cube.
+    if(std::abs(m_plane - dot3(m_normal, centre)) > m_normal_radius)
+      return false;
+    // The nine cross products of a cube axis with a triangle edge.
+    for(const Edge_axis& l : m_edge_axes)
+    {
+      const double at = dot3(l.direction, centre);
+      if(l.lo - at > l.radius || l.hi - at < -l.radius)
         return false;
     }
-  return true;
-}
+    return true;
+  }
+
+private:
+  struct Edge_axis
+  {
+    Vec3 direction;
+    double lo, hi, radius; // the triangle's extent along the direction, the cube's half
+  };
+  double m_half;
+  Vec3 m_lo, m_hi, m_normal;
+  double m_plane = 0, m_normal_radius = 0;
+  std::array<Edge_axis, 9> m_edge_axes;
+};
 
 } // namespace internal
 } // namespace Geodesic_skeleton

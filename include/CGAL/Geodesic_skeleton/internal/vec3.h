@@ -24,6 +24,13 @@ inline Vec3 cross3(const Vec3& a, const Vec3& b)
 }
 inline double norm3(const Vec3& a) { return std::sqrt(dot3(a, a)); }
 
+// floor() for coordinates of a grid (finite, far below 2^62), without a library call.
+inline long floor_to_long(double x)
+{
+  const long i = long(x);
+  return i - long(x < double(i));
+}
+
 } // namespace internal
 } // namespace Geodesic_skeleton
 } // namespace CGAL
