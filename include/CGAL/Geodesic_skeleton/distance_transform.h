@@ -27,10 +27,12 @@ namespace internal {
 // One line of the separable transform (Felzenszwalb and Huttenlocher 2012, "Distance
 // transforms of sampled functions"): out[q] = min_p (q - p)^2 + f[p], by the lower envelope
 // of the parabolas rooted at the finite samples. `f` and `out` are read and written with a
-// stride; `v` and `z` are scratch of at least n + 1 entries.
+// stride; `v`, `z_num` and `z_den` are scratch of at least n + 1 entries. The envelope's
+// breakpoints are kept as fractions z_num / z_den (z_den > 0) and compared by cross
+// multiplication: exact, and without a division per sample.
 inline void lower_envelope_pass(std::uint32_t* data, std::size_t n, std::ptrdiff_t stride,
                                 std::vector<std::int64_t>& f, std::vector<std::int64_t>& v,
-                                std::vector<double>& z)
+                                std::vector<std::int64_t>& z_num, std::vector<std::int64_t>& z_den)
 {
   constexpr std::uint32_t infinity = 0xFFFFFFFFu;
   std::int64_t first = -1, last = -1; // the first and last samples that are not 0
@@ -51,31 +53,35 @@ inline void lower_envelope_pass(std::uint32_t* data, std::size_t n, std::ptrdiff
   // [first - 1, last + 1] needs the envelope, the 0s around it stay.
   const std::int64_t from = (std::max)(first - 1, std::int64_t(0));
   const std::int64_t to = (std::min)(last + 2, std::int64_t(n));
+  // v[0..k]: the samples whose parabolas make the envelope; the parabola of v[i] is lowest
+  // from z[i] = z_num[i] / z_den[i] on (z[0] is minus infinity).
   std::ptrdiff_t k = -1;
   for(std::int64_t q = from; q < to; ++q)
   {
     if(f[q] < 0)
       continue;
-    double s = 0;
+    std::int64_t num = 0, den = 1; // where the parabola of q overtakes that of v[k]
     while(k >= 0)
     {
       const std::int64_t p = v[k];
-      s = double((f[q] + q * q) - (f[p] + p * p)) / double(2 * (q - p));
-      if(s <= z[k])
-        --k;
+      num = (f[q] + q * q) - (f[p] + p * p);
+      den = 2 * (q - p);
+      if(k > 0 && num * z_den[k] <= z_num[k] * den)
+        --k; // v[k]'s parabola is nowhere lowest any more
       else
         break;
     }
     ++k;
     v[k] = q;
-    z[k] = k == 0 ? -HUGE_VAL : s;
+    z_num[k] = num;
+    z_den[k] = den;
   }
   if(k < 0)
     return; // no finite sample: the line stays infinite
   std::ptrdiff_t j = 0;
   for(std::int64_t q = from; q < to; ++q)
   {
-    while(j < k && z[j + 1] < double(q))
+    while(j < k && z_num[j + 1] < q * z_den[j + 1])
       ++j;
     const std::int64_t p = v[j];
     data[std::ptrdiff_t(q) * stride] = std::uint32_t((q - p) * (q - p) + f[p]);
@@ -145,16 +151,15 @@ Voxel_distance_field distance_transform(const VoxelSet& voxels,
   }
 
   const std::size_t longest = (std::max)({layout.nx, layout.ny, layout.nz}) + 1;
-  std::vector<std::int64_t> f(longest), v(longest);
-  std::vector<double> z(longest);
+  std::vector<std::int64_t> f(longest), v(longest), z_num(longest), z_den(longest);
   for(std::size_t zz = 0; zz < layout.nz; ++zz) // along y
     for(std::size_t x = 0; x < nx; ++x)
       internal::lower_envelope_pass(d.data() + zz * layout.stride_z + x, layout.ny,
-                                    layout.stride_y, f, v, z);
+                                    layout.stride_y, f, v, z_num, z_den);
   for(std::size_t y = 0; y < layout.ny; ++y) // along z
     for(std::size_t x = 0; x < nx; ++x)
       internal::lower_envelope_pass(d.data() + y * layout.stride_y + x, layout.nz,
-                                    layout.stride_z, f, v, z);
+                                    layout.stride_z, f, v, z_num, z_den);
 
   return Voxel_distance_field(voxels.frame(), box, std::move(d));
 }

@@ -82,13 +82,14 @@ public:
             continue;
           m_state[i] = 0;
           ++removed;
-          for(std::ptrdiff_t o : m_offsets)
+          // Its neighbours in the set (the bits of its configuration) burn again.
+          for(std::uint32_t in = config; in != 0; in &= in - 1)
           {
-            std::uint8_t& s = m_state[std::size_t(std::ptrdiff_t(i) + o)];
-            if((s & IN) && !(s & QUEUED))
+            const std::size_t j = std::size_t(std::ptrdiff_t(i) + m_offsets[std::size_t(lowest_bit(in))]);
+            if(!(m_state[j] & QUEUED))
             {
-              s |= QUEUED;
-              round.push_back(std::uint32_t(std::ptrdiff_t(i) + o));
+              m_state[j] |= QUEUED;
+              round.push_back(std::uint32_t(j));
             }
           }
         }

@@ -25,7 +25,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -84,6 +83,7 @@ inline void rasterize(const std::vector<Triangle3>& g, std::size_t first, std::s
   // Half a voxel, slightly enlarged so that rounding never opens a gap between triangles.
   const double half = 0.5 + 1e-6;
   const int hi[3] = {layout.box.max.x - 1, layout.box.max.y - 1, layout.box.max.z - 1};
+  Triangle_cube_test test;
   for(std::size_t t = first; t < last; ++t)
   {
     const Vec3* c = g[t].data();
@@ -98,7 +98,7 @@ inline void rasterize(const std::vector<Triangle3>& g, std::size_t first, std::s
     // A triangle whose box is one voxel wide along two axes meets every voxel of its box
     // (it is connected, and it runs through that row of voxels from end to end): no test.
     const bool meets_whole_box = (from[0] != to[0]) + (from[1] != to[1]) + (from[2] != to[2]) <= 1;
-    std::optional<Triangle_cube_test> test; // set up at the first voxel that needs it
+    bool test_set = false; // `test` is set up at the first voxel that needs it
     for(int z = from[2]; z <= to[2]; ++z)
       for(int y = from[1]; y <= to[1]; ++y)
         for(int x = from[0]; x <= to[0]; ++x)
@@ -106,9 +106,12 @@ inline void rasterize(const std::vector<Triangle3>& g, std::size_t first, std::s
           const std::size_t i = layout.index(Voxel_key{x, y, z});
           if(labels[i] != EMPTY)
             continue;
-          if(!meets_whole_box && !test)
-            test.emplace(c[0], c[1], c[2], half);
-          if(meets_whole_box || test->meets(Vec3{x + 0.5, y + 0.5, z + 0.5}))
+          if(!meets_whole_box && !test_set)
+          {
+            test.set(c[0], c[1], c[2], half);
+            test_set = true;
+          }
+          if(meets_whole_box || test.meets(Vec3{x + 0.5, y + 0.5, z + 0.5}))
             labels[i] = label;
         }
   }

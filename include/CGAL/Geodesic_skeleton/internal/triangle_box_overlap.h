@@ -23,8 +23,13 @@ namespace internal {
 class Triangle_cube_test
 {
 public:
-  Triangle_cube_test(const Vec3& a, const Vec3& b, const Vec3& c, double half) : m_half(half)
+  Triangle_cube_test() = default;
+  Triangle_cube_test(const Vec3& a, const Vec3& b, const Vec3& c, double half) { set(a, b, c, half); }
+
+  // Tests this triangle from now on.
+  void set(const Vec3& a, const Vec3& b, const Vec3& c, double half)
   {
+    m_half = half;
     const Vec3 v[3] = {a, b, c};
     for(int i = 0; i < 3; ++i)
     {
@@ -74,10 +79,10 @@ private:
     Vec3 direction;
     double lo, hi, radius; // the triangle's extent along the direction, the cube's half
   };
-  double m_half;
-  Vec3 m_lo, m_hi, m_normal;
+  double m_half = 0;
+  Vec3 m_lo{}, m_hi{}, m_normal{};
   double m_plane = 0, m_normal_radius = 0;
-  std::array<Edge_axis, 9> m_edge_axes;
+  std::array<Edge_axis, 9> m_edge_axes{};
 };
 
 } // namespace internal
