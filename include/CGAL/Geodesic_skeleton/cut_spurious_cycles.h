@@ -21,9 +21,10 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <algorithm>
+#include <array>
+#include <climits>
 #include <cstddef>
 #include <cstdint>
-#include <map>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -165,83 +166,72 @@ public:
   // Decides every step of `steps` (pairs of adjacent voxels) at once.
   std::vector<bool> leave_inside(const std::vector<std::pair<Voxel_key, Voxel_key>>& steps)
   {
-    // The unit moves all walks need, by axis and line.
-    std::map<std::array<int, 4>, std::size_t> move_index; // (axis, u, v, start along axis)
-    std::vector<std::array<int, 4>> moves;
-    auto walks_of = [](const Voxel_key& from, const Voxel_key& to) {
-      const int o[3] = {to.x - from.x, to.y - from.y, to.z - from.z};
-      std::vector<int> axes;
+    // Every walk of every step, as the unit moves it makes: (axis, u, v, start along axis).
+    using Move = std::array<int, 4>;
+    std::vector<std::pair<Move, std::uint32_t>> uses; // (move, walk)
+    std::vector<std::uint32_t> walk_step;             // the step of each walk
+    for(std::size_t s = 0; s < steps.size(); ++s)
+    {
+      const Voxel_key& from = steps[s].first;
+      const int o[3] = {steps[s].second.x - from.x, steps[s].second.y - from.y, steps[s].second.z - from.z};
+      std::array<int, 3> axes{};
+      int count = 0;
       for(int a = 0; a < 3; ++a)
         if(o[a] != 0)
-          axes.push_back(a);
-      std::vector<std::vector<std::array<int, 4>>> walks;
+          axes[std::size_t(count++)] = a;
       do
       {
+        const std::uint32_t walk = std::uint32_t(walk_step.size());
+        walk_step.push_back(std::uint32_t(s));
         int at[3] = {from.x, from.y, from.z};
-        std::vector<std::array<int, 4>> walk;
-        for(int a : axes)
+        for(int k = 0; k < count; ++k)
         {
-          const int start = (std::min)(at[a], at[a] + o[a]);
-          walk.push_back({a, at[(a + 1) % 3], at[(a + 2) % 3], start});
+          const int a = axes[std::size_t(k)];
+          uses.emplace_back(Move{a, at[(a + 1) % 3], at[(a + 2) % 3], (std::min)(at[a], at[a] + o[a])}, walk);
           at[a] += o[a];
         }
-        walks.push_back(walk);
-      } while(std::next_permutation(axes.begin(), axes.end()));
-      return walks;
-    };
-    std::vector<std::vector<std::vector<std::size_t>>> walk_moves(steps.size());
-    for(std::size_t s = 0; s < steps.size(); ++s)
-      for(const auto& walk : walks_of(steps[s].first, steps[s].second))
-      {
-        std::vector<std::size_t> ids;
-        for(const auto& m : walk)
-        {
-          const auto inserted = move_index.emplace(m, moves.size());
-          if(inserted.second)
-            moves.push_back(m);
-          ids.push_back(inserted.first->second);
-        }
-        walk_moves[s].push_back(ids);
-      }
-    // Decide each unit move on its line.
+      } while(std::next_permutation(axes.begin(), axes.begin() + count));
+    }
+    std::vector<Move> moves;
+    moves.reserve(uses.size());
+    for(const auto& use : uses)
+      moves.push_back(use.first);
+    std::sort(moves.begin(), moves.end());
+    moves.erase(std::unique(moves.begin(), moves.end()), moves.end());
+
+    // Decide each unit move on its line (the moves are sorted by axis first).
     std::vector<bool> move_leaves(moves.size(), false);
     for(int axis = 0; axis < 3; ++axis)
     {
+      const auto first = std::lower_bound(moves.begin(), moves.end(), Move{axis, INT_MIN, INT_MIN, INT_MIN});
+      const auto last = std::lower_bound(moves.begin(), moves.end(), Move{axis + 1, INT_MIN, INT_MIN, INT_MIN});
       std::vector<std::array<double, 2>> lines;
-      std::vector<std::size_t> which;
-      for(std::size_t m = 0; m < moves.size(); ++m)
-        if(moves[m][0] == axis)
-        {
-          lines.push_back({moves[m][1] + 0.5, moves[m][2] + 0.5});
-          which.push_back(m);
-        }
+      for(auto m = first; m != last; ++m)
+        lines.push_back({(*m)[1] + 0.5, (*m)[2] + 0.5});
       const auto hits = m_g.crossings(axis, lines);
       for(std::size_t l = 0; l < lines.size(); ++l)
       {
         if(!is_balanced(hits[l]))
           continue;
-        const double from = moves[which[l]][3] + 0.5, to = from + 1;
+        const std::size_t m = std::size_t(first - moves.begin()) + l;
+        const double from = moves[m][3] + 0.5, to = from + 1;
         int winding = winding_before(hits[l], from);
         bool leaves = winding == 0;
         for(const Line_hit& h : hits[l])
           if(h.at >= from && h.at < to)
             leaves = leaves || (winding += h.sign) == 0;
-        move_leaves[which[l]] = leaves;
+        move_leaves[m] = leaves;
       }
     }
+    // A walk leaves when one of its moves does; a step, when all its walks do.
+    std::vector<bool> walk_leaves(walk_step.size(), false);
+    for(const auto& use : uses)
+      if(move_leaves[std::size_t(std::lower_bound(moves.begin(), moves.end(), use.first) - moves.begin())])
+        walk_leaves[use.second] = true;
     std::vector<bool> leaves(steps.size(), true);
-    for(std::size_t s = 0; s < steps.size(); ++s)
-      for(const auto& walk : walk_moves[s])
-      {
-        bool walk_leaves = false;
-        for(std::size_t m : walk)
-          walk_leaves = walk_leaves || move_leaves[m];
-        if(!walk_leaves)
-        {
-          leaves[s] = false;
-          break;
-        }
-      }
+    for(std::size_t w = 0; w < walk_step.size(); ++w)
+      if(!walk_leaves[w])
+        leaves[walk_step[w]] = false;
     return leaves;
   }
 

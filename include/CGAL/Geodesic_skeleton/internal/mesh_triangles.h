@@ -35,19 +35,27 @@ std::vector<Triangle3> mesh_triangles(const FaceGraph& mesh, VertexPointMap vpm,
 {
   std::vector<Triangle3> triangles;
   triangles.reserve(static_cast<std::size_t>(num_faces(mesh)));
+  auto corner = [&](auto v) {
+    const auto& p = get(vpm, v);
+    const Vec3 q{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+    if(!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
+      throw std::invalid_argument(std::string(caller) +
+                                  ": a vertex has a non-finite coordinate (NaN or infinite)");
+    return q;
+  };
   std::vector<Vec3> corners;
   for(auto f : faces(mesh))
   {
-    corners.clear();
-    for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+    const auto h = halfedge(f, mesh);
+    const auto h1 = next(h, mesh), h2 = next(h1, mesh);
+    if(next(h2, mesh) == h) // a triangle: its corners in the order vertices_around_face() gives
     {
-      const auto& p = get(vpm, v);
-      const Vec3 q{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-      if(!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
-        throw std::invalid_argument(std::string(caller) +
-                                    ": a vertex has a non-finite coordinate (NaN or infinite)");
-      corners.push_back(q);
+      triangles.push_back(Triangle3{corner(target(h, mesh)), corner(target(h1, mesh)), corner(target(h2, mesh))});
+      continue;
     }
+    corners.clear();
+    for(auto v : vertices_around_face(h, mesh))
+      corners.push_back(corner(v));
     for(std::size_t i = 1; i + 1 < corners.size(); ++i)
       triangles.push_back(Triangle3{corners[0], corners[i], corners[i + 1]});
   }

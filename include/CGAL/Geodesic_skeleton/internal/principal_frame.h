@@ -95,19 +95,26 @@ inline Principal_frame principal_frame(const std::vector<Triangle3>& world_trian
 
   // Second moments about the centroid: E[x x^T] over a triangle is (sum_i v_i v_i^T + s s^T)/12
   // with s the sum of its vertices.
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  // (Six sums: the matrix is symmetric.)
+  double moment[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
   for(std::size_t i = 0; i < triangles.size(); ++i)
   {
-    Eigen::Vector3d v[3], s = Eigen::Vector3d::Zero();
-    for(int j = 0; j < 3; ++j)
+    double v[3][3], s[3];
+    for(int c = 0; c < 3; ++c)
     {
-      v[j] = Eigen::Vector3d(triangles[i][j][0], triangles[i][j][1], triangles[i][j][2]) - centroid;
-      s += v[j];
+      for(int j = 0; j < 3; ++j)
+        v[j][c] = triangles[i][j][c] - centroid[c];
+      s[c] = (v[0][c] + v[1][c]) + v[2][c];
     }
-    covariance += areas[i] / 12. *
-                  (v[0] * v[0].transpose() + v[1] * v[1].transpose() + v[2] * v[2].transpose() +
-                   s * s.transpose());
+    const double weight = areas[i] / 12.;
+    for(int r = 0; r < 3; ++r)
+      for(int c = r; c < 3; ++c)
+        moment[r][c] += weight * (((v[0][r] * v[0][c] + v[1][r] * v[1][c]) + v[2][r] * v[2][c]) + s[r] * s[c]);
   }
+  Eigen::Matrix3d covariance;
+  for(int r = 0; r < 3; ++r)
+    for(int c = 0; c < 3; ++c)
+      covariance(r, c) = r <= c ? moment[r][c] : moment[c][r];
   covariance /= area_sum;
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
   if(solver.info() != Eigen::Success)
