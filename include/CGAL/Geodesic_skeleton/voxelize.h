@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -117,6 +118,36 @@ inline void rasterize(const std::vector<Triangle3>& g, std::size_t first, std::s
   }
 }
 
+// The first x in [x, end) where row[x] is EMPTY (0), or `end`; eight bytes at a time.
+inline std::size_t skip_labelled(const std::uint8_t* row, std::size_t x, std::size_t end)
+{
+  for(; x + 8 <= end; x += 8)
+  {
+    std::uint64_t word;
+    std::memcpy(&word, row + x, 8);
+    if(((word - 0x0101010101010101ull) & ~word & 0x8080808080808080ull) != 0)
+      break; // a zero byte in this word
+  }
+  while(x < end && row[x] != 0)
+    ++x;
+  return x;
+}
+
+// The first x in [x, end) where row[x] is not EMPTY (0), or `end`; eight bytes at a time.
+inline std::size_t skip_empty(const std::uint8_t* row, std::size_t x, std::size_t end)
+{
+  for(; x + 8 <= end; x += 8)
+  {
+    std::uint64_t word;
+    std::memcpy(&word, row + x, 8);
+    if(word != 0)
+      break;
+  }
+  while(x < end && row[x] == 0)
+    ++x;
+  return x;
+}
+
 // Labels OUTSIDE every EMPTY voxel 6-connected to the border of the box through EMPTY
 // voxels (a 6-path cannot cross a conservatively rasterised surface). A scanline fill: a
 // seed grows into the whole run of EMPTY voxels along x that holds it, and the runs of the
@@ -125,13 +156,16 @@ inline void rasterize(const std::vector<Triangle3>& g, std::size_t first, std::s
 inline void flood_outside(const Grid_layout& layout, std::vector<std::uint8_t>& labels)
 {
   const std::size_t nx = layout.nx, ny = layout.ny, nz = layout.nz;
+  static_assert(EMPTY == 0, "the run scans below look for zero bytes");
   std::vector<std::uint32_t> seeds; // indices of EMPTY voxels, each the start of a run to fill
   auto seed_runs = [&](std::size_t row_start, std::size_t from, std::size_t to) {
     // Seeds the EMPTY runs of the row that meet [from, to].
     const std::uint8_t* row = labels.data() + row_start;
-    for(std::size_t x = from; x <= to; ++x)
-      if(row[x] == EMPTY && (x == from || row[x - 1] != EMPTY))
-        seeds.push_back(std::uint32_t(row_start + x));
+    for(std::size_t x = skip_labelled(row, from, to + 1); x <= to; x = skip_labelled(row, x, to + 1))
+    {
+      seeds.push_back(std::uint32_t(row_start + x));
+      x = skip_empty(row, x, to + 1);
+    }
   };
   for(std::size_t z = 0; z < nz; ++z)
     for(std::size_t y = 0; y < ny; ++y)
@@ -153,11 +187,10 @@ inline void flood_outside(const Grid_layout& layout, std::vector<std::uint8_t>& 
       continue; // filled since it was seeded
     const std::size_t row_start = i - i % nx, yz = i / nx, y = yz % ny, z = yz / ny;
     std::uint8_t* row = labels.data() + row_start;
-    std::size_t from = i - row_start, to = from;
+    std::size_t from = i - row_start;
+    const std::size_t to = skip_empty(row, from, nx) - 1;
     while(from > 0 && row[from - 1] == EMPTY)
       --from;
-    while(to + 1 < nx && row[to + 1] == EMPTY)
-      ++to;
     std::fill(row + from, row + to + 1, std::uint8_t(OUTSIDE));
     if(y > 0)
       seed_runs(row_start - nx, from, to);
