@@ -169,13 +169,32 @@ public:
         hi[d] = (std::max)(hi[d], floor_to_long(l[d]));
       }
     const std::size_t nu = std::size_t(hi[0] - lo[0] + 1), nv = std::size_t(hi[1] - lo[1] + 1);
-    std::vector<std::int32_t> first(nu * nv, -1), next(lines.size(), -1);
+    // The lines by cell (a counting sort): those of cell k are in_cell[first[k] .. first[k + 1]),
+    // with their coordinates next to each other in `at`.
+    std::vector<std::uint32_t> first(nu * nv + 1, 0), cell_of(lines.size());
+    std::vector<std::uint8_t> near(nu * nv, 0); // whether a line is in the 2 x 2 cells from here on
     for(std::size_t i = 0; i < lines.size(); ++i)
     {
-      const std::size_t cell = std::size_t(floor_to_long(lines[i][1]) - lo[1]) * nu +
-                               std::size_t(floor_to_long(lines[i][0]) - lo[0]);
-      next[i] = first[cell];
-      first[cell] = std::int32_t(i);
+      const std::size_t u = std::size_t(floor_to_long(lines[i][0]) - lo[0]);
+      const std::size_t v = std::size_t(floor_to_long(lines[i][1]) - lo[1]);
+      cell_of[i] = std::uint32_t(v * nu + u);
+      ++first[v * nu + u + 1];
+      for(std::size_t dv = 0; dv < 2 && dv <= v; ++dv)
+        for(std::size_t du = 0; du < 2 && du <= u; ++du)
+          near[(v - dv) * nu + (u - du)] = 1;
+    }
+    for(std::size_t k = 1; k < first.size(); ++k)
+      first[k] += first[k - 1];
+    std::vector<std::uint32_t> in_cell(lines.size());
+    std::vector<std::array<double, 2>> at(lines.size());
+    {
+      std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+      for(std::size_t i = 0; i < lines.size(); ++i)
+      {
+        const std::uint32_t slot = fill[cell_of[i]]++;
+        in_cell[slot] = std::uint32_t(i);
+        at[slot] = lines[i];
+      }
     }
     const int b = (axis + 1) % 3, c = (axis + 2) % 3;
     std::vector<std::pair<std::uint32_t, Line_hit>> found; // (line, crossing), by triangle
@@ -186,13 +205,18 @@ public:
       const long from_v = (std::max)(lo[1], long(cells.lo[c])), to_v = (std::min)(hi[1], long(cells.hi[c]));
       if(from_u > to_u || from_v > to_v)
         continue; // far from every line (or not finite)
+      if(to_u - from_u <= 1 && to_v - from_v <= 1 &&
+         !near[std::size_t(from_v - lo[1]) * nu + std::size_t(from_u - lo[0])])
+        continue; // a small triangle with no line in its cells: most of them
       const Triangle3& g = m_g[t];
       bool boxed = false;                                 // the triangle's box, once a line is near
       double u_min = 0, u_max = 0, v_min = 0, v_max = 0;
       std::optional<Projected_triangle> pt;               // built once a line is in that box
       for(long cv = from_v; cv <= to_v; ++cv)
         for(long cu = from_u; cu <= to_u; ++cu)
-          for(std::int32_t i = first[std::size_t(cv - lo[1]) * nu + std::size_t(cu - lo[0])]; i >= 0; i = next[i])
+        {
+          const std::size_t cell = std::size_t(cv - lo[1]) * nu + std::size_t(cu - lo[0]);
+          for(std::uint32_t slot = first[cell]; slot < first[cell + 1]; ++slot)
           {
             if(!boxed)
             {
@@ -202,15 +226,16 @@ public:
               v_min = (std::min)({g[0][c], g[1][c], g[2][c]});
               v_max = (std::max)({g[0][c], g[1][c], g[2][c]});
             }
-            const double pu = lines[std::size_t(i)][0], pv = lines[std::size_t(i)][1];
+            const double pu = at[slot][0], pv = at[slot][1];
             if(pu < u_min || pu > u_max || pv < v_min || pv > v_max)
               continue; // most lines of the cells miss the box of a small triangle
             if(!pt)
               pt.emplace(g, axis);
-            double at;
-            if(pt->crossable() && pt->crossing(pu, pv, at))
-              found.emplace_back(std::uint32_t(i), Line_hit{at, pt->sign()});
+            double along;
+            if(pt->crossable() && pt->crossing(pu, pv, along))
+              found.emplace_back(in_cell[slot], Line_hit{along, pt->sign()});
           }
+        }
     }
     // By line (a counting sort, which keeps the triangles' order), then along each line.
     for(const auto& f : found)
