@@ -55,28 +55,33 @@ public:
     for(std::uint32_t i : order)
       m_state[i] |= QUEUED;
     std::size_t removed = 0, next = 0;
-    std::vector<std::uint32_t> round, candidates;
+    // A voxel is queued at most once at a time (the QUEUED bit): buffers of the set's size
+    // hold any round and its candidates.
+    std::vector<std::uint32_t> round(order.size()), candidates(order.size());
+    std::size_t round_size = 0;
     while(next < order.size())
     {
       const std::uint32_t level = m_d2[order[next]];
-      round.clear();
+      round_size = 0;
       while(next < order.size() && m_d2[order[next]] == level)
-        round.push_back(order[next++]);
-      while(!round.empty())
+        round[round_size++] = order[next++];
+      while(round_size > 0)
       {
-        candidates.clear();
-        for(std::uint32_t i : round)
+        std::size_t candidate_count = 0;
+        for(std::size_t k = 0; k < round_size; ++k)
         {
+          const std::uint32_t i = round[k];
           m_state[i] &= std::uint8_t(~QUEUED);
           if(!(m_state[i] & IN))
             continue;
           const std::uint32_t config = configuration(i);
           if(!protected_end(i, config, 0.6) && m_test.is_simple(config))
-            candidates.push_back(i);
+            candidates[candidate_count++] = i;
         }
-        round.clear();
-        for(std::uint32_t i : candidates)
+        round_size = 0;
+        for(std::size_t k = 0; k < candidate_count; ++k)
         {
+          const std::uint32_t i = candidates[k];
           const std::uint32_t config = configuration(i);
           if(protected_end(i, config, 0.3) || !m_test.is_simple(config))
             continue;
@@ -89,7 +94,7 @@ public:
             if(!(m_state[j] & QUEUED))
             {
               m_state[j] |= QUEUED;
-              round.push_back(std::uint32_t(j));
+              round[round_size++] = std::uint32_t(j);
             }
           }
         }

@@ -36,54 +36,68 @@ struct Triangle_box
   }
 };
 
+// Where the ray from p along d meets triangle t: not at all, once, or too near an edge or
+// a vertex to tell (where a crossing could be counted twice or missed). Moeller-Trumbore.
+enum class Ray_meets { no, once, unclear };
+
+inline Ray_meets ray_meets_triangle(const Vec3& p, const Vec3& d, const Triangle3& t)
+{
+  // p + s d = t0 + u (t1 - t0) + v (t2 - t0).
+  const Vec3 e1 = sub(t[1], t[0]), e2 = sub(t[2], t[0]);
+  const Vec3 h = cross3(d, e2);
+  const double det = dot3(e1, h);
+  const double scale = norm3(e1) * norm3(e2); // not sqrt of a product of squares: it overflows sooner
+  if(std::abs(det) <= 1e-12 * scale)
+    return Ray_meets::no; // the ray runs along the triangle's plane: no single crossing
+  const Vec3 w = sub(p, t[0]);
+  const double u = dot3(w, h) / det;
+  const Vec3 q = cross3(w, e1);
+  const double v = dot3(d, q) / det;
+  const double s = dot3(e2, q) / det;
+  const double margin = 1e-9;
+  if(u < -margin || v < -margin || u + v > 1 + margin || s < 0)
+    return Ray_meets::no;
+  if(u < margin || v < margin || u + v > 1 - margin || s < margin)
+    return Ray_meets::unclear;
+  return Ray_meets::once;
+}
+
+// Whether the box of a triangle can meet the ray from p along grid axis `axis`.
+inline bool box_meets_axis_ray(const Vec3& p, int axis, const Triangle_box& box)
+{
+  const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+  return !(p[a] < box.lo[a] || p[a] > box.hi[a] || p[b] < box.lo[b] || p[b] > box.hi[b] || p[axis] > box.hi[axis]);
+}
+
+// The directions of the rays of is_inside_closed_soup(), in the order they are tried.
+inline const std::array<Vec3, 5>& ray_directions()
+{
+  static const std::array<Vec3, 5> directions = {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1},
+                                                 Vec3{0.5773502692, 0.5773502692, 0.5773502692},
+                                                 Vec3{0.2672612419, -0.5345224838, 0.8017837257}};
+  return directions;
+}
+
 // Ray parity against a closed triangle soup (with the boxes of its triangles): odd
 // crossings along a ray means inside. Rays go along the axes first, so that a triangle
 // whose box misses the ray's line is skipped with a few comparisons. A ray that passes too
-// near an edge or a vertex of a triangle (where a crossing could be counted twice or
-// missed) is dropped and another direction tried. Costs O(F) per query: meant for the few
-// points in doubt, where building a search tree would cost more.
+// near an edge or a vertex of a triangle is dropped and another direction tried, from
+// `first_direction` on. Costs O(F) per query: meant for the few points in doubt.
 inline bool is_inside_closed_soup(const Vec3& p, const std::vector<Triangle3>& triangles,
-                                  const std::vector<Triangle_box>& boxes)
+                                  const std::vector<Triangle_box>& boxes, int first_direction = 0)
 {
-  static const Vec3 directions[5] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1},
-                                     {0.5773502692, 0.5773502692, 0.5773502692},
-                                     {0.2672612419, -0.5345224838, 0.8017837257}};
-  for(int axis = 0; axis < 5; ++axis)
+  for(int axis = first_direction; axis < 5; ++axis)
   {
-    const Vec3& d = directions[axis];
+    const Vec3& d = ray_directions()[std::size_t(axis)];
     bool ambiguous = false;
     std::size_t crossings = 0;
-    for(std::size_t i = 0; i < triangles.size(); ++i)
+    for(std::size_t i = 0; i < triangles.size() && !ambiguous; ++i)
     {
-      if(axis < 3) // the ray runs along this axis: the other two coordinates must be covered
-      {
-        const int a = (axis + 1) % 3, b = (axis + 2) % 3;
-        const Triangle_box& box = boxes[i];
-        if(p[a] < box.lo[a] || p[a] > box.hi[a] || p[b] < box.lo[b] || p[b] > box.hi[b] || p[axis] > box.hi[axis])
-          continue;
-      }
-      const Triangle3& t = triangles[i];
-      // Moeller-Trumbore: p + s d = t0 + u (t1 - t0) + v (t2 - t0).
-      const Vec3 e1 = sub(t[1], t[0]), e2 = sub(t[2], t[0]);
-      const Vec3 h = cross3(d, e2);
-      const double det = dot3(e1, h);
-      const double scale = norm3(e1) * norm3(e2); // not sqrt of a product of squares: it overflows sooner
-      if(std::abs(det) <= 1e-12 * scale)
-        continue; // the ray runs along the triangle's plane: no single crossing
-      const Vec3 w = sub(p, t[0]);
-      const double u = dot3(w, h) / det;
-      const Vec3 q = cross3(w, e1);
-      const double v = dot3(d, q) / det;
-      const double s = dot3(e2, q) / det;
-      const double margin = 1e-9;
-      if(u < -margin || v < -margin || u + v > 1 + margin || s < 0)
+      if(axis < 3 && !box_meets_axis_ray(p, axis, boxes[i]))
         continue;
-      if(u < margin || v < margin || u + v > 1 - margin || s < margin)
-      {
-        ambiguous = true;
-        break;
-      }
-      ++crossings;
+      const Ray_meets meets = ray_meets_triangle(p, d, triangles[i]);
+      ambiguous = meets == Ray_meets::unclear;
+      crossings += meets == Ray_meets::once;
     }
     if(!ambiguous)
       return crossings % 2 == 1;
@@ -143,12 +157,43 @@ public:
 
   bool has_interior() const { return !m_triangles.empty(); }
 
-  // Moves `p` from outside the mesh to the nearest point of the surface and `depth` further
-  // in (halving the step while it would leave the mesh on the other side). Returns whether
-  // it moved; a point inside, or any point of a mesh without interior, stays.
+  // Whether each point is inside (is_inside_closed_soup()), the rays along x of all the
+  // points in one pass over the triangles (the points sorted by y, each triangle looking up
+  // those in its box's y range); the other rays only for the points x cannot tell.
+  std::vector<bool> inside(const std::vector<Vec3>& points) const
+  {
+    std::vector<std::size_t> by_y(points.size());
+    for(std::size_t k = 0; k < points.size(); ++k)
+      by_y[k] = k;
+    std::sort(by_y.begin(), by_y.end(), [&](std::size_t a, std::size_t b) { return points[a][1] < points[b][1]; });
+    std::vector<std::size_t> crossings(points.size(), 0);
+    std::vector<bool> unclear(points.size(), false);
+    for(std::size_t i = 0; i < m_triangles.size(); ++i)
+    {
+      const Triangle_box& box = m_boxes[i];
+      auto k = std::lower_bound(by_y.begin(), by_y.end(), box.lo[1],
+                                [&](std::size_t a, double y) { return points[a][1] < y; });
+      for(; k != by_y.end() && points[*k][1] <= box.hi[1]; ++k)
+      {
+        if(unclear[*k] || !box_meets_axis_ray(points[*k], 0, box))
+          continue;
+        const Ray_meets meets = ray_meets_triangle(points[*k], ray_directions()[0], m_triangles[i]);
+        unclear[*k] = meets == Ray_meets::unclear;
+        crossings[*k] += meets == Ray_meets::once;
+      }
+    }
+    std::vector<bool> in(points.size());
+    for(std::size_t k = 0; k < points.size(); ++k)
+      in[k] = unclear[k] ? is_inside_closed_soup(points[k], m_triangles, m_boxes, 1) : crossings[k] % 2 == 1;
+    return in;
+  }
+
+  // Moves `p`, outside the mesh, to the nearest point of the surface and `depth` further in
+  // (halving the step while it would leave the mesh on the other side). Returns whether it
+  // moved.
   bool move_inside(Vec3& p, double depth) const
   {
-    if(!has_interior() || is_inside_closed_soup(p, m_triangles, m_boxes))
+    if(!has_interior())
       return false;
     Vec3 nearest = p;
     double best = std::numeric_limits<double>::infinity();
@@ -192,7 +237,8 @@ private:
 //
 // `face_triangles` are the faces of `mesh` in world coordinates (mesh_triangles()).
 //
-// Complexity: O(D F) for D doubtful joints and F faces (D is a handful: limb tips).
+// Complexity: O(F log D + C) for D doubtful joints, F faces and C pairs of a joint and a
+// face that its ray along x may cross, plus O(F) for each joint moved (limb tips).
 template <typename TriangleMesh, typename Point>
 std::size_t move_joints_inside(const TriangleMesh& mesh, std::vector<Triangle3> face_triangles,
                                Control_skeleton<Point>& control, double depth, double deep_radius)
@@ -202,18 +248,25 @@ std::size_t move_joints_inside(const TriangleMesh& mesh, std::vector<Triangle3> 
   if(!doubt)
     return 0;
   const Closed_mesh_interior interior(mesh, std::move(face_triangles));
-  std::size_t moved = 0;
-  for(Control_joint<Point>& joint : control.joints)
-  {
-    if(joint.radius >= deep_radius)
-      continue;
-    Vec3 p{CGAL::to_double(joint.point.x()), CGAL::to_double(joint.point.y()), CGAL::to_double(joint.point.z())};
-    if(interior.move_inside(p, depth))
+  if(!interior.has_interior())
+    return 0;
+  std::vector<std::size_t> doubtful;
+  std::vector<Vec3> points;
+  for(std::size_t j = 0; j < control.joints.size(); ++j)
+    if(control.joints[j].radius < deep_radius)
     {
-      joint.point = Point(p[0], p[1], p[2]);
+      const Point& q = control.joints[j].point;
+      doubtful.push_back(j);
+      points.push_back(Vec3{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())});
+    }
+  const std::vector<bool> inside = interior.inside(points);
+  std::size_t moved = 0;
+  for(std::size_t k = 0; k < doubtful.size(); ++k)
+    if(!inside[k] && interior.move_inside(points[k], depth))
+    {
+      control.joints[doubtful[k]].point = Point(points[k][0], points[k][1], points[k][2]);
       ++moved;
     }
-  }
   if(moved > 0)
     for(auto* bones : {&control.bones, &control.cut_bones})
       for(Control_bone<Point>& bone : *bones)
