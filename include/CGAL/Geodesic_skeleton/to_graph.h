@@ -49,6 +49,7 @@ public:
     m_label.assign(m_layout.volume(), BLOCKED);
     const Grid_layout field(distances.box());
     const auto& values = distances.values();
+    std::size_t solid = 0;
     for(std::size_t z = 0; z < field.nz; ++z)
       for(std::size_t y = 0; y < field.ny; ++y)
       {
@@ -56,10 +57,13 @@ public:
         std::int32_t* to = m_label.data() + m_layout.index(Voxel_key{field.box.min.x, field.box.min.y + int(y),
                                                                      field.box.min.z + int(z)});
         for(std::size_t x = 0; x < field.nx; ++x)
+        {
           to[x] = from[x] != 0 ? UNREACHED : BLOCKED;
+          solid += from[x] != 0;
+        }
       }
-    std::vector<std::uint32_t> queue;
-    queue.reserve(nodes.size());
+    std::vector<std::uint32_t> queue; // each voxel enters once: the solid and the nodes
+    queue.reserve(solid + nodes.size());
     for(std::size_t v = 0; v < nodes.size(); ++v)
       if(distances.box().contains(nodes[v]))
       {

@@ -251,12 +251,13 @@ std::size_t voxelize_impl(const FaceGraph& mesh, VoxelSet& voxels, const NamedPa
 
   Voxel_box solid_box;
   std::size_t enclosed = 0;
-  for(std::size_t i = 0; i < labels.size(); ++i)
+  internal::for_each_cell(layout, [&](std::size_t i, const Voxel_key& k) {
     if(labels[i] != internal::OUTSIDE)
     {
-      solid_box.extend(layout.key(i));
+      solid_box.extend(k);
       enclosed += labels[i] == internal::EMPTY;
     }
+  });
   if(enclosed == 0)
   {
     std::ostringstream msg;
@@ -270,19 +271,21 @@ std::size_t voxelize_impl(const FaceGraph& mesh, VoxelSet& voxels, const NamedPa
   {
     internal::peel_surface_voxels(grid_triangles, layout, labels);
     solid_box = Voxel_box();
-    for(std::size_t i = 0; i < labels.size(); ++i)
+    internal::for_each_cell(layout, [&](std::size_t i, const Voxel_key& k) {
       if(labels[i] != internal::OUTSIDE && labels[i] != internal::REMOVED)
-        solid_box.extend(layout.key(i));
+        solid_box.extend(k);
+    });
   }
 
   voxels.reset(frame, solid_box);
   std::size_t count = 0;
-  for(std::size_t i = 0; i < labels.size(); ++i)
+  internal::for_each_cell(layout, [&](std::size_t i, const Voxel_key& k) {
     if(labels[i] != internal::OUTSIDE && labels[i] != internal::REMOVED)
     {
-      voxels.insert(layout.key(i));
+      voxels.insert(k);
       ++count;
     }
+  });
   if(rasterised != nullptr)
   {
     rasterised->faces_in_world = std::move(triangles);

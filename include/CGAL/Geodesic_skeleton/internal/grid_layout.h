@@ -74,6 +74,18 @@ struct Grid_layout
   }
 };
 
+// Calls f(i, k) for every voxel k of the layout's box, i its index, in increasing index
+// order (no division to find the keys).
+template <typename Function>
+void for_each_cell(const Grid_layout& layout, Function f)
+{
+  std::size_t i = 0;
+  for(int z = layout.box.min.z; z < layout.box.max.z; ++z)
+    for(int y = layout.box.min.y; y < layout.box.max.y; ++y)
+      for(int x = layout.box.min.x; x < layout.box.max.x; ++x, ++i)
+        f(i, Voxel_key{x, y, z});
+}
+
 // Indices 0..5 of neighbourhood_26() that are face neighbours, in that order.
 inline const std::array<int, 6>& face_neighbour_positions()
 {
