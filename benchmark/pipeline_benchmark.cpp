@@ -138,6 +138,18 @@ int main(int argc, char* argv[])
   tables << "\n| mesh | Reeb graph points | pruned skeleton points | thinned points | pruned junctions"
             " | Reeb ms | pruning ms | pruned segments | bones (smoothed, split) |\n"
             "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  // Where our time goes: the median over the timed runs of each stage's time.
+  const std::vector<std::string> stages = {"voxelize", "distance_transform", "thin", "thinned_graph",
+                                           "remove_small_pieces", "cut_spurious_cycles", "prune", "to_graph",
+                                           "smooth", "split_into_bones", "joints_inside"};
+  std::ostringstream stage_table;
+  stage_table << "\n| mesh |";
+  for(const std::string& stage : stages)
+    stage_table << " " << stage << " ms |";
+  stage_table << "\n|---|";
+  for(std::size_t k = 0; k < stages.size(); ++k)
+    stage_table << "---:|";
+  stage_table << "\n" << std::fixed << std::setprecision(2);
   std::vector<double> ratios;
   for(const std::string& name : names)
   {
@@ -152,13 +164,22 @@ int main(int argc, char* argv[])
     // Ours: the median of `repeats` runs of the default pipeline.
     Our_run ours;
     std::vector<double> times;
+    std::vector<std::vector<double>> stage_times(stages.size());
     for(int r = 0; r < repeats; ++r)
     {
       const double t0 = now_ms();
       ours.report = gs::extract_control_skeleton(mesh, ours.control, gs::parameters::resolution(resolution));
       times.push_back(now_ms() - t0);
+      for(const auto& [stage, ms] : ours.report.timings_ms)
+        for(std::size_t k = 0; k < stages.size(); ++k)
+          if(stage == stages[k])
+            stage_times[k].push_back(ms);
     }
     ours.ms = median(times);
+    stage_table << "| " << name << " |";
+    for(auto& t : stage_times)
+      stage_table << " " << (t.empty() ? 0.0 : median(t)) << " |";
+    stage_table << "\n";
     // Once more for the intermediate outputs and the Reeb graph's time (not timed).
     const gs::Control_skeleton_report with_reeb = gs::extract_control_skeleton(
         mesh, ours.control,
@@ -220,5 +241,6 @@ int main(int argc, char* argv[])
   if(!ratios.empty())
     std::cout << "\nmedian MCF/ours: " << median(ratios) << " over " << ratios.size() << " meshes\n";
   std::cout << tables.str();
+  std::cout << stage_table.str();
   return 0;
 }
