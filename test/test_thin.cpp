@@ -15,6 +15,7 @@
 #include <random>
 #include <set>
 #include <stdexcept>
+#include <vector>
 
 namespace gs = CGAL::Geodesic_skeleton;
 namespace test = Geodesic_skeleton_test;
@@ -147,6 +148,66 @@ BOOST_AUTO_TEST_CASE(the_simple_point_test_agrees_with_the_definition)
   BOOST_TEST(!test.is_simple((1u << 26) - 1));    // interior
   BOOST_TEST(test.is_simple(1u << 4));            // curve end
   BOOST_TEST(!test.is_simple((1u << 4) | (1u << 21))); // middle of a curve
+}
+
+// T6 by definition: the 6-components of the background in the 18-neighbourhood (centre
+// excluded) that hold a face neighbour of the centre, grown through that background only.
+int t6_by_definition(std::uint32_t config)
+{
+  std::vector<gs::Voxel_key> background;
+  for(int b = 0; b < 26; ++b)
+    if(!(config & (1u << b)) && gs::offset_order(gs::neighbourhood_26()[b]) <= 2)
+      background.push_back(gs::neighbourhood_26()[b]);
+  std::set<gs::Voxel_key> seen;
+  int count = 0;
+  for(const gs::Voxel_key& start : background)
+  {
+    if(gs::offset_order(start) != 1 || seen.count(start))
+      continue;
+    ++count;
+    std::vector<gs::Voxel_key> stack{start};
+    seen.insert(start);
+    while(!stack.empty())
+    {
+      const gs::Voxel_key k = stack.back();
+      stack.pop_back();
+      for(const gs::Voxel_key& n : background)
+        if(std::abs(n.x - k.x) + std::abs(n.y - k.y) + std::abs(n.z - k.z) == 1 && seen.insert(n).second)
+          stack.push_back(n);
+    }
+  }
+  return count;
+}
+
+BOOST_AUTO_TEST_CASE(the_peeling_tests_agree_with_their_definitions)
+{
+  // object_is_split: T26 >= 2 (the object's voxels around the centre fall apart);
+  // background_is_one_piece: T6 = 1.
+  const auto& test = gs::internal::Simple_point_test::instance();
+  std::mt19937 random(11);
+  int split = 0, one_piece = 0;
+  for(int trial = 0; trial < 3000; ++trial)
+  {
+    const unsigned density = 1 + trial % 7;
+    std::uint32_t config = 0;
+    for(int b = 0; b < 26; ++b)
+      if(random() % 8 < density)
+        config |= 1u << b;
+    gs::Sparse_voxel_set around;
+    for(int b = 0; b < 26; ++b)
+      if(config & (1u << b))
+        around.insert(gs::neighbourhood_26()[b]);
+    const bool expected_split = around.size() > 0 && test::components_26(around) >= 2;
+    const bool expected_one_piece = t6_by_definition(config) == 1;
+    BOOST_TEST(test.object_is_split(config) == expected_split, "configuration " << config);
+    BOOST_TEST(test.background_is_one_piece(config) == expected_one_piece, "configuration " << config);
+    split += expected_split;
+    one_piece += expected_one_piece;
+  }
+  BOOST_TEST(split > 100);
+  BOOST_TEST(split < 2900);
+  BOOST_TEST(one_piece > 100);
+  BOOST_TEST(one_piece < 2900);
 }
 
 BOOST_AUTO_TEST_CASE_TEMPLATE(a_ball_thins_to_one_voxel, VoxelSet, Voxel_set_models)
