@@ -9,11 +9,11 @@
 
 #include <CGAL/Geodesic_skeleton/Voxel_frame.h>
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
+#include <CGAL/Geodesic_skeleton/internal/byte_runs.h>
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -108,20 +108,8 @@ public:
     const std::uint8_t* row = m_cells.data();
     for(int z = m_box.min.z; z < m_box.max.z; ++z)
       for(int y = m_box.min.y; y < m_box.max.y; ++y, row += nx)
-        for(std::size_t x = 0; x < nx; x += 8) // eight cells at a time, skipped when all empty
-        {
-          const std::size_t n = (std::min)(std::size_t(8), nx - x);
-          if(n == 8)
-          {
-            std::uint64_t word;
-            std::memcpy(&word, row + x, 8);
-            if(word == 0)
-              continue;
-          }
-          for(std::size_t k = x; k < x + n; ++k)
-            if(row[k] != 0)
-              f(Voxel_key{m_box.min.x + int(k), y, z});
-        }
+        for(std::size_t x = internal::first_nonzero(row, 0, nx); x < nx; x = internal::first_nonzero(row, x + 1, nx))
+          f(Voxel_key{m_box.min.x + int(x), y, z});
   }
 
 private:

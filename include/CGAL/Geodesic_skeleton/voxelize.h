@@ -10,6 +10,7 @@
 
 #include <CGAL/Geodesic_skeleton/Voxel_frame.h>
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
+#include <CGAL/Geodesic_skeleton/internal/byte_runs.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
 #include <CGAL/Geodesic_skeleton/internal/mesh_triangles.h>
 #include <CGAL/Geodesic_skeleton/internal/peel_surface_voxels.h>
@@ -25,7 +26,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -88,13 +88,12 @@ inline void rasterize(const std::vector<Triangle3>& g, std::size_t first, std::s
   for(std::size_t t = first; t < last; ++t)
   {
     const Vec3* c = g[t].data();
+    const Triangle_box box(g[t]);
     int from[3], to[3];
     for(int a = 0; a < 3; ++a)
     {
-      const double lo_c = (std::min)({c[0][a], c[1][a], c[2][a]});
-      const double hi_c = (std::max)({c[0][a], c[1][a], c[2][a]});
-      from[a] = int((std::max)(0L, floor_to_long(lo_c - 1e-6)));
-      to[a] = int((std::min)(long(hi[a]), floor_to_long(hi_c + 1e-6)));
+      from[a] = int((std::max)(0L, floor_to_long(box.lo[a] - 1e-6)));
+      to[a] = int((std::min)(long(hi[a]), floor_to_long(box.hi[a] + 1e-6)));
     }
     // A triangle whose box is one voxel wide along two axes meets every voxel of its box
     // (it is connected, and it runs through that row of voxels from end to end): no test.
@@ -118,36 +117,6 @@ inline void rasterize(const std::vector<Triangle3>& g, std::size_t first, std::s
   }
 }
 
-// The first x in [x, end) where row[x] is EMPTY (0), or `end`; eight bytes at a time.
-inline std::size_t skip_labelled(const std::uint8_t* row, std::size_t x, std::size_t end)
-{
-  for(; x + 8 <= end; x += 8)
-  {
-    std::uint64_t word;
-    std::memcpy(&word, row + x, 8);
-    if(((word - 0x0101010101010101ull) & ~word & 0x8080808080808080ull) != 0)
-      break; // a zero byte in this word
-  }
-  while(x < end && row[x] != 0)
-    ++x;
-  return x;
-}
-
-// The first x in [x, end) where row[x] is not EMPTY (0), or `end`; eight bytes at a time.
-inline std::size_t skip_empty(const std::uint8_t* row, std::size_t x, std::size_t end)
-{
-  for(; x + 8 <= end; x += 8)
-  {
-    std::uint64_t word;
-    std::memcpy(&word, row + x, 8);
-    if(word != 0)
-      break;
-  }
-  while(x < end && row[x] == 0)
-    ++x;
-  return x;
-}
-
 // Labels OUTSIDE every EMPTY voxel 6-connected to the border of the box through EMPTY
 // voxels (a 6-path cannot cross a conservatively rasterised surface). A scanline fill: a
 // seed grows into the whole run of EMPTY voxels along x that holds it, and the runs of the
@@ -161,10 +130,10 @@ inline void flood_outside(const Grid_layout& layout, std::vector<std::uint8_t>& 
   auto seed_runs = [&](std::size_t row_start, std::size_t from, std::size_t to) {
     // Seeds the EMPTY runs of the row that meet [from, to].
     const std::uint8_t* row = labels.data() + row_start;
-    for(std::size_t x = skip_labelled(row, from, to + 1); x <= to; x = skip_labelled(row, x, to + 1))
+    for(std::size_t x = first_zero(row, from, to + 1); x <= to; x = first_zero(row, x, to + 1))
     {
       seeds.push_back(std::uint32_t(row_start + x));
-      x = skip_empty(row, x, to + 1);
+      x = first_nonzero(row, x, to + 1);
     }
   };
   for(std::size_t z = 0; z < nz; ++z)
@@ -188,7 +157,7 @@ inline void flood_outside(const Grid_layout& layout, std::vector<std::uint8_t>& 
     const std::size_t row_start = i - i % nx, yz = i / nx, y = yz % ny, z = yz / ny;
     std::uint8_t* row = labels.data() + row_start;
     std::size_t from = i - row_start;
-    const std::size_t to = skip_empty(row, from, nx) - 1;
+    const std::size_t to = first_nonzero(row, from, nx) - 1;
     while(from > 0 && row[from - 1] == EMPTY)
       --from;
     std::fill(row + from, row + to + 1, std::uint8_t(OUTSIDE));

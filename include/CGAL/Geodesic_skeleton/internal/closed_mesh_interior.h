@@ -6,6 +6,7 @@
 
 #include <CGAL/Geodesic_skeleton/Control_skeleton.h>
 #include <CGAL/Geodesic_skeleton/internal/principal_frame.h>
+#include <CGAL/Geodesic_skeleton/internal/triangle_box_overlap.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/number_utils.h>
@@ -21,20 +22,6 @@
 namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
-
-// The box of a triangle.
-struct Triangle_box
-{
-  Vec3 lo, hi;
-  explicit Triangle_box(const Triangle3& t)
-  {
-    for(int a = 0; a < 3; ++a)
-    {
-      lo[a] = (std::min)({t[0][a], t[1][a], t[2][a]});
-      hi[a] = (std::max)({t[0][a], t[1][a], t[2][a]});
-    }
-  }
-};
 
 // Where the ray from p along d meets triangle t: not at all, once, or too near an edge or
 // a vertex to tell (where a crossing could be counted twice or missed). Moeller-Trumbore.

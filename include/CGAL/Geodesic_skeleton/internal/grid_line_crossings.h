@@ -12,6 +12,7 @@
 // is O(F + L + C) for F triangles, L lines and C crossings (plus the cells covered).
 
 #include <CGAL/Geodesic_skeleton/internal/principal_frame.h>
+#include <CGAL/Geodesic_skeleton/internal/triangle_box_overlap.h>
 
 #include <algorithm>
 #include <array>
@@ -139,10 +140,11 @@ public:
   explicit Grid_line_crossings(std::vector<Triangle3> g) : m_g(std::move(g)), m_cells(m_g.size())
   {
     for(std::size_t t = 0; t < m_g.size(); ++t)
+    {
+      const Triangle_box box(m_g[t]);
       for(int d = 0; d < 3; ++d)
       {
-        const double lo = (std::min)({m_g[t][0][d], m_g[t][1][d], m_g[t][2][d]});
-        const double hi = (std::max)({m_g[t][0][d], m_g[t][1][d], m_g[t][2][d]});
+        const double lo = box.lo[d], hi = box.hi[d];
         if(!(std::abs(lo) < cell_bound && std::abs(hi) < cell_bound))
         {
           // Not finite, or far beyond any grid: no line of a grid crosses it.
@@ -153,6 +155,7 @@ public:
         m_cells[t].lo[d] = std::int32_t(floor_to_long(lo));
         m_cells[t].hi[d] = std::int32_t(floor_to_long(hi));
       }
+    }
   }
 
   // The crossings of each line (u, v) parallel to `axis`, sorted along the line.
@@ -209,23 +212,15 @@ public:
          !near[std::size_t(from_v - lo[1]) * nu + std::size_t(from_u - lo[0])])
         continue; // a small triangle with no line in its cells: most of them
       const Triangle3& g = m_g[t];
-      bool boxed = false;                                 // the triangle's box, once a line is near
-      double u_min = 0, u_max = 0, v_min = 0, v_max = 0;
-      std::optional<Projected_triangle> pt;               // built once a line is in that box
+      const double u_min = (std::min)({g[0][b], g[1][b], g[2][b]}), u_max = (std::max)({g[0][b], g[1][b], g[2][b]});
+      const double v_min = (std::min)({g[0][c], g[1][c], g[2][c]}), v_max = (std::max)({g[0][c], g[1][c], g[2][c]});
+      std::optional<Projected_triangle> pt; // built once a line is in the triangle's box
       for(long cv = from_v; cv <= to_v; ++cv)
         for(long cu = from_u; cu <= to_u; ++cu)
         {
           const std::size_t cell = std::size_t(cv - lo[1]) * nu + std::size_t(cu - lo[0]);
           for(std::uint32_t slot = first[cell]; slot < first[cell + 1]; ++slot)
           {
-            if(!boxed)
-            {
-              boxed = true;
-              u_min = (std::min)({g[0][b], g[1][b], g[2][b]});
-              u_max = (std::max)({g[0][b], g[1][b], g[2][b]});
-              v_min = (std::min)({g[0][c], g[1][c], g[2][c]});
-              v_max = (std::max)({g[0][c], g[1][c], g[2][c]});
-            }
             const double pu = at[slot][0], pv = at[slot][1];
             if(pu < u_min || pu > u_max || pv < v_min || pv > v_max)
               continue; // most lines of the cells miss the box of a small triangle

@@ -14,6 +14,22 @@ namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
 
+// The axis-aligned bounding box of a triangle.
+struct Triangle_box
+{
+  Vec3 lo, hi;
+  Triangle_box() = default;
+  Triangle_box(const Vec3& a, const Vec3& b, const Vec3& c)
+  {
+    for(int i = 0; i < 3; ++i)
+    {
+      lo[i] = (std::min)({a[i], b[i], c[i]});
+      hi[i] = (std::max)({a[i], b[i], c[i]});
+    }
+  }
+  explicit Triangle_box(const std::array<Vec3, 3>& t) : Triangle_box(t[0], t[1], t[2]) {}
+};
+
 // Whether a triangle meets axis-aligned cubes of half edge `half`, each given by its
 // centre: the separating axis theorem with the 13 candidate axes (3 cube normals, the
 // triangle normal, 9 cross products of cube and triangle edges), as in Akenine-Moller's
@@ -31,11 +47,7 @@ public:
   {
     m_half = half;
     const Vec3 v[3] = {a, b, c};
-    for(int i = 0; i < 3; ++i)
-    {
-      m_lo[i] = (std::min)({a[i], b[i], c[i]});
-      m_hi[i] = (std::max)({a[i], b[i], c[i]});
-    }
+    m_box = Triangle_box(a, b, c);
     const Vec3 e[3] = {sub(b, a), sub(c, b), sub(a, c)};
     m_normal = cross3(e[0], e[1]);
     m_plane = dot3(m_normal, a);
@@ -58,7 +70,7 @@ public:
   {
     // The cube's face normals: the triangle's bounding box against the cube.
     for(int i = 0; i < 3; ++i)
-      if(m_lo[i] - centre[i] > m_half || m_hi[i] - centre[i] < -m_half)
+      if(m_box.lo[i] - centre[i] > m_half || m_box.hi[i] - centre[i] < -m_half)
         return false;
     // The triangle's plane against the cube.
     if(std::abs(m_plane - dot3(m_normal, centre)) > m_normal_radius)
@@ -80,7 +92,8 @@ private:
     double lo, hi, radius; // the triangle's extent along the direction, the cube's half
   };
   double m_half = 0;
-  Vec3 m_lo{}, m_hi{}, m_normal{};
+  Triangle_box m_box{};
+  Vec3 m_normal{};
   double m_plane = 0, m_normal_radius = 0;
   std::array<Edge_axis, 9> m_edge_axes{};
 };
