@@ -86,18 +86,42 @@ Topology topology(const VoxelSet& s, const gs::Voxel_box& box_with_margin)
                   test::euler_characteristic(s)};
 }
 
+// `count` random configurations, of densities from sparse to full in turn, so that both
+// answers of a test are frequent.
+std::vector<std::uint32_t> random_configurations(unsigned seed, int count)
+{
+  std::mt19937 random(seed);
+  std::vector<std::uint32_t> configs;
+  for(int trial = 0; trial < count; ++trial)
+  {
+    const unsigned density = 1 + trial % 7;
+    std::uint32_t config = 0;
+    for(int b = 0; b < 26; ++b)
+      if(random() % 8 < density)
+        config |= 1u << b;
+    configs.push_back(config);
+  }
+  return configs;
+}
+
+// The voxels of a configuration around the origin (the centre itself not included).
+gs::Sparse_voxel_set neighbours_of(std::uint32_t config)
+{
+  gs::Sparse_voxel_set around;
+  for(int b = 0; b < 26; ++b)
+    if(config & (1u << b))
+      around.insert(gs::neighbourhood_26()[b]);
+  return around;
+}
+
 // Simple by definition: deleting the centre of a 5x5x5 block holding the configuration
 // changes neither the components, nor the cavities, nor the Euler characteristic.
 bool simple_by_definition(std::uint32_t config)
 {
   const gs::Voxel_box block{gs::Voxel_key{-2, -2, -2}, gs::Voxel_key{3, 3, 3}};
-  gs::Sparse_voxel_set with;
+  const gs::Sparse_voxel_set without = neighbours_of(config);
+  gs::Sparse_voxel_set with = without;
   with.insert(gs::Voxel_key{0, 0, 0});
-  for(int b = 0; b < 26; ++b)
-    if(config & (1u << b))
-      with.insert(gs::neighbourhood_26()[b]);
-  gs::Sparse_voxel_set without = with;
-  without.erase(gs::Voxel_key{0, 0, 0});
   if(without.size() == 0)
     return false;
   return topology(with, block) == topology(without, block);
@@ -111,43 +135,6 @@ std::uint32_t configuration(const VoxelSet& s, const gs::Voxel_key& k)
     if(s.contains(k + gs::neighbourhood_26()[b]))
       config |= 1u << b;
   return config;
-}
-
-template <typename VoxelSet>
-void thin_set(VoxelSet& s)
-{
-  const auto field = gs::distance_transform(s);
-  gs::thin(s, field);
-}
-
-} // namespace
-
-BOOST_AUTO_TEST_SUITE(thin)
-
-BOOST_AUTO_TEST_CASE(the_simple_point_test_agrees_with_the_definition)
-{
-  const auto& test = gs::internal::Simple_point_test::instance();
-  std::mt19937 random(5);
-  int simple = 0, checked = 0;
-  for(int trial = 0; trial < 3000; ++trial)
-  {
-    // Densities from sparse to full, so that both answers are frequent.
-    const unsigned density = 1 + trial % 7;
-    std::uint32_t config = 0;
-    for(int b = 0; b < 26; ++b)
-      if(random() % 8 < density)
-        config |= 1u << b;
-    const bool expected = simple_by_definition(config);
-    BOOST_TEST(test.is_simple(config) == expected, "configuration " << config);
-    simple += expected;
-    ++checked;
-  }
-  BOOST_TEST(simple > checked / 10);
-  BOOST_TEST(simple < checked * 9 / 10);
-  BOOST_TEST(!test.is_simple(0));                 // isolated
-  BOOST_TEST(!test.is_simple((1u << 26) - 1));    // interior
-  BOOST_TEST(test.is_simple(1u << 4));            // curve end
-  BOOST_TEST(!test.is_simple((1u << 4) | (1u << 21))); // middle of a curve
 }
 
 // T6 by definition: the 6-components of the background in the 18-neighbourhood (centre
@@ -179,24 +166,45 @@ int t6_by_definition(std::uint32_t config)
   return count;
 }
 
+template <typename VoxelSet>
+void thin_set(VoxelSet& s)
+{
+  const auto field = gs::distance_transform(s);
+  gs::thin(s, field);
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(thin)
+
+BOOST_AUTO_TEST_CASE(the_simple_point_test_agrees_with_the_definition)
+{
+  const auto& test = gs::internal::Simple_point_test::instance();
+  int simple = 0, checked = 0;
+  for(const std::uint32_t config : random_configurations(5, 3000))
+  {
+    const bool expected = simple_by_definition(config);
+    BOOST_TEST(test.is_simple(config) == expected, "configuration " << config);
+    simple += expected;
+    ++checked;
+  }
+  BOOST_TEST(simple > checked / 10);
+  BOOST_TEST(simple < checked * 9 / 10);
+  BOOST_TEST(!test.is_simple(0));                 // isolated
+  BOOST_TEST(!test.is_simple((1u << 26) - 1));    // interior
+  BOOST_TEST(test.is_simple(1u << 4));            // curve end
+  BOOST_TEST(!test.is_simple((1u << 4) | (1u << 21))); // middle of a curve
+}
+
 BOOST_AUTO_TEST_CASE(the_peeling_tests_agree_with_their_definitions)
 {
   // object_is_split: T26 >= 2 (the object's voxels around the centre fall apart);
   // background_is_one_piece: T6 = 1.
   const auto& test = gs::internal::Simple_point_test::instance();
-  std::mt19937 random(11);
   int split = 0, one_piece = 0;
-  for(int trial = 0; trial < 3000; ++trial)
+  for(const std::uint32_t config : random_configurations(11, 3000))
   {
-    const unsigned density = 1 + trial % 7;
-    std::uint32_t config = 0;
-    for(int b = 0; b < 26; ++b)
-      if(random() % 8 < density)
-        config |= 1u << b;
-    gs::Sparse_voxel_set around;
-    for(int b = 0; b < 26; ++b)
-      if(config & (1u << b))
-        around.insert(gs::neighbourhood_26()[b]);
+    const gs::Sparse_voxel_set around = neighbours_of(config);
     const bool expected_split = around.size() > 0 && test::components_26(around) >= 2;
     const bool expected_one_piece = t6_by_definition(config) == 1;
     BOOST_TEST(test.object_is_split(config) == expected_split, "configuration " << config);
