@@ -49,9 +49,29 @@ struct Topology
   }
 };
 
+// Adds to `seen` the 6-component of `start` through the voxels where `in_region(k)` holds.
+template <typename Region>
+void flood_6(const gs::Voxel_key& start, Region in_region, std::set<gs::Voxel_key>& seen)
+{
+  std::vector<gs::Voxel_key> stack{start};
+  seen.insert(start);
+  while(!stack.empty())
+  {
+    const gs::Voxel_key k = stack.back();
+    stack.pop_back();
+    for(const gs::Voxel_key& o : gs::neighbourhood_26())
+    {
+      const gs::Voxel_key n = k + o;
+      if(gs::offset_order(o) == 1 && in_region(n) && seen.insert(n).second)
+        stack.push_back(n);
+    }
+  }
+}
+
 template <typename VoxelSet>
 int background_components_6(const VoxelSet& s, const gs::Voxel_box& box)
 {
+  auto in_background = [&](const gs::Voxel_key& k) { return box.contains(k) && !s.contains(k); };
   std::set<gs::Voxel_key> seen;
   int count = 0;
   for(int z = box.min.z; z < box.max.z; ++z)
@@ -59,22 +79,10 @@ int background_components_6(const VoxelSet& s, const gs::Voxel_box& box)
       for(int x = box.min.x; x < box.max.x; ++x)
       {
         const gs::Voxel_key start{x, y, z};
-        if(s.contains(start) || seen.count(start))
+        if(!in_background(start) || seen.count(start))
           continue;
         ++count;
-        std::vector<gs::Voxel_key> stack{start};
-        seen.insert(start);
-        while(!stack.empty())
-        {
-          const gs::Voxel_key k = stack.back();
-          stack.pop_back();
-          for(const gs::Voxel_key& o : gs::neighbourhood_26())
-          {
-            const gs::Voxel_key n = k + o;
-            if(gs::offset_order(o) == 1 && box.contains(n) && !s.contains(n) && seen.insert(n).second)
-              stack.push_back(n);
-          }
-        }
+        flood_6(start, in_background, seen);
       }
   return count;
 }
@@ -141,28 +149,19 @@ std::uint32_t configuration(const VoxelSet& s, const gs::Voxel_key& k)
 // excluded) that hold a face neighbour of the centre, grown through that background only.
 int t6_by_definition(std::uint32_t config)
 {
-  std::vector<gs::Voxel_key> background;
+  std::set<gs::Voxel_key> background;
   for(int b = 0; b < 26; ++b)
     if(!(config & (1u << b)) && gs::offset_order(gs::neighbourhood_26()[b]) <= 2)
-      background.push_back(gs::neighbourhood_26()[b]);
+      background.insert(gs::neighbourhood_26()[b]);
+  auto in_background = [&](const gs::Voxel_key& k) { return background.count(k) != 0; };
   std::set<gs::Voxel_key> seen;
   int count = 0;
   for(const gs::Voxel_key& start : background)
-  {
-    if(gs::offset_order(start) != 1 || seen.count(start))
-      continue;
-    ++count;
-    std::vector<gs::Voxel_key> stack{start};
-    seen.insert(start);
-    while(!stack.empty())
+    if(gs::offset_order(start) == 1 && !seen.count(start))
     {
-      const gs::Voxel_key k = stack.back();
-      stack.pop_back();
-      for(const gs::Voxel_key& n : background)
-        if(std::abs(n.x - k.x) + std::abs(n.y - k.y) + std::abs(n.z - k.z) == 1 && seen.insert(n).second)
-          stack.push_back(n);
+      ++count;
+      flood_6(start, in_background, seen);
     }
-  }
   return count;
 }
 
