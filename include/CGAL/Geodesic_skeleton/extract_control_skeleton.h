@@ -254,10 +254,8 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, mesh));
   const double memory_limit = internal::memory_limit(np);
-  internal::Lazy_mesh_grid_lines<FaceGraph, decltype(vpm)> mesh_lines(
-      mesh, vpm, solid.frame(), choose_parameter(get_parameter(np, internal_np::fill_holes_tag), true),
-      "extract_control_skeleton");
-  mesh_lines.use_grid_triangles(std::move(rasterised.in_grid));
+  internal::Grid_line_crossings grid_lines(std::move(rasterised.in_grid));
+  auto mesh_lines = [&grid_lines]() -> internal::Grid_line_crossings& { return grid_lines; };
   if constexpr(!is_default_parameter<NamedParameters, internal_np::thinned_skeleton_output_t>::value)
   {
     Skeleton thinned;

@@ -104,7 +104,6 @@ public:
     return removed;
   }
 
-  bool contains(std::size_t i) const { return (m_state[i] & IN) != 0; }
   bool deleted(std::size_t i) const { return (m_state[i] & DELETED) != 0; }
 
   // The 26-neighbourhood of i as a configuration (bit b for neighbourhood_26()[b]): the hot

@@ -58,11 +58,6 @@ struct Grid_layout
     const std::size_t x = i % nx, yz = i / nx;
     return Voxel_key{box.min.x + int(x), box.min.y + int(yz % ny), box.min.z + int(yz / ny)};
   }
-  bool on_border(std::size_t i) const
-  {
-    const std::size_t x = i % nx, yz = i / nx, y = yz % ny, z = yz / ny;
-    return x == 0 || y == 0 || z == 0 || x + 1 == nx || y + 1 == ny || z + 1 == nz;
-  }
   // Index offsets of the 26 neighbours, in the order of neighbourhood_26().
   std::array<std::ptrdiff_t, 26> neighbour_offsets() const
   {

@@ -147,8 +147,7 @@ Grid_line_crossings mesh_grid_lines(const FaceGraph& mesh, VertexPointMap vpm, c
 }
 
 // mesh_grid_lines(), built on first use: the stages that need inside tests only sometimes
-// (cut_spurious_cycles()) pay nothing otherwise, and the stages of the pipeline share it
-// (built from the triangles that voxelize() rasterised).
+// (cut_spurious_cycles()) pay nothing otherwise.
 template <typename FaceGraph, typename VertexPointMap>
 class Lazy_mesh_grid_lines
 {
@@ -157,13 +156,6 @@ public:
                        const char* caller)
     : m_mesh(mesh), m_vpm(vpm), m_frame(frame), m_fill_holes(fill_holes), m_caller(caller)
   {}
-  // Uses these triangles (in the grid coordinates of the frame: voxelize_impl() gives them)
-  // rather than computing them again from the mesh.
-  void use_grid_triangles(std::vector<Triangle3> grid_triangles)
-  {
-    m_lines.emplace(std::move(grid_triangles));
-  }
-
   Grid_line_crossings& operator()()
   {
     if(!m_lines)
