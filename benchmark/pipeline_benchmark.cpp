@@ -12,6 +12,8 @@
 // skeleton against points of the pruned skeleton, and control segments of the pruned
 // skeleton (its branches) against bones of the smoothed, split skeleton.
 
+#include "benchmark_command_line.h"
+
 #include <CGAL/Geodesic_skeleton.h>
 #include <CGAL/Geodesic_skeleton/internal/skeleton_branches.h>
 
@@ -82,15 +84,6 @@ double coverage(const Mesh& mesh, const std::vector<Segment>& segments)
   const double diagonal = std::sqrt(std::pow(box.xmax() - box.xmin(), 2) + std::pow(box.ymax() - box.ymin(), 2) +
                                     std::pow(box.zmax() - box.zmin(), 2));
   return d[std::min(d.size() - 1, std::size_t(0.95 * double(d.size())))] / diagonal;
-}
-
-std::vector<std::string> split_commas(const std::string& s)
-{
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  for(std::string item; std::getline(in, item, ',');)
-    out.push_back(item);
-  return out;
 }
 
 struct Our_run

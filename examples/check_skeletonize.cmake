@@ -18,13 +18,27 @@ foreach(path "input" "mesh;vertices" "mesh;faces" "mesh;closed" "mesh;components
              "timings_ms;total" "timings_ms;voxelize" "timings_ms;thin" "timings_ms;prune"
              "stages;thinned;points" "stages;thinned;end_points" "stages;thinned;junctions" "stages;thinned;cycles"
              "stages;pruned;points" "stages;pruned;end_points" "stages;pruned;junctions" "stages;pruned;cycles"
-             "stages;reeb;nodes" "stages;reeb;edges" "skeleton;points" "skeleton;radii" "skeleton;edges"
+             "computed" "timings_ms;read" "skeleton;points" "skeleton;radii" "skeleton;edges"
              "control;joints" "control;bones")
   string(JSON value ERROR_VARIABLE error GET "${json}" ${path})
   if(error)
     message(FATAL_ERROR "the JSON has no key '${path}': ${error}")
   endif()
 endforeach()
+
+# The Reeb graph (a comparison baseline) is computed only when asked for, and the JSON says
+# what was computed.
+string(JSON reeb ERROR_VARIABLE no_reeb GET "${json}" stages reeb)
+if(NOT no_reeb OR json MATCHES "\"reeb_graph\"")
+  message(FATAL_ERROR "the Reeb graph was computed without --reeb")
+endif()
+run(${MESH} --reeb -o ${WORK_DIR}/reeb.json)
+file(READ ${WORK_DIR}/reeb.json reeb_json)
+string(JSON reeb_nodes GET "${reeb_json}" stages reeb nodes)
+string(JSON computed GET "${reeb_json}" computed)
+if(reeb_nodes LESS 2 OR NOT computed MATCHES "reeb_graph")
+  message(FATAL_ERROR "--reeb: ${reeb_nodes} Reeb graph nodes, computed: ${computed}")
+endif()
 
 string(JSON joints LENGTH "${json}" control joints)
 string(JSON bones LENGTH "${json}" control bones)

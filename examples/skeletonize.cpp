@@ -2,6 +2,7 @@
 // every stage's counts and timings, and a picture on request.
 //
 //   skeletonize INPUT_MESH [-o OUT] [--resolution N] [--svg PREVIEW.svg] [stage options]
+//   skeletonize --batch DIR_OR_LIST -o OUT_DIR [--threads N] [stage options]
 //
 // The format of OUT follows its extension: .json (the documented contract, also written to
 // standard output when there is no -o), .obj, .bvh, .polylines.txt. See --help.
@@ -9,14 +10,18 @@
 #include <CGAL/Geodesic_skeleton.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <boost/pending/disjoint_sets.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <mutex>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -26,10 +31,17 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h> // isatty
+#if defined(__GLIBC__)
+#include <malloc.h> // mallopt
+#endif
+#if defined(_OPENMP)
+#include <omp.h>
+#endif
+
 namespace gs = CGAL::Geodesic_skeleton;
 namespace params = CGAL::Geodesic_skeleton::parameters;
 namespace ranges = CGAL::Geodesic_skeleton::parameter_ranges;
-namespace PMP = CGAL::Polygon_mesh_processing;
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
@@ -48,6 +60,9 @@ struct Usage_error : std::runtime_error
 struct Options
 {
   std::string input, output, svg, svg_stage = "control";
+  std::string batch;       // a folder of meshes or a file listing them, one per line
+  int threads = 0;         // batch mode's threads; 0: one per core
+  bool reeb_graph = false; // compute the Reeb graph (a comparison baseline) and report it
   int resolution = gs::default_voxel_resolution;
   double small_piece_fraction = ranges::small_piece_fraction.default_value;
   double spur_length_factor = ranges::spur_length_factor.default_value;
@@ -89,6 +104,7 @@ const Numeric_option& numeric_option(const std::string& option)
 }
 
 const char* const usage_head = R"(usage: skeletonize INPUT_MESH [-o OUT] [--resolution N] [--svg PREVIEW.svg] [options]
+       skeletonize --batch DIR_OR_LIST -o OUT_DIR [--threads N] [options]
 
 Extracts the animation control skeleton of a triangle mesh (any format that CGAL reads:
 OFF, OBJ, PLY, STL, ...). Without -o, writes the JSON report to standard output.
@@ -99,6 +115,13 @@ OFF, OBJ, PLY, STL, ...). Without -o, writes the JSON report to standard output.
   --svg PREVIEW.svg          also draw the mesh and its control skeleton in three views
   --svg-stage STAGE          what the picture shows: control (default), pruned (the smoothed
                              curve skeleton), thinned (the curve skeleton after thinning), reeb
+  --reeb                     also compute the Reeb graph of the geodesic distance (the
+                             paper's baseline) and report it in the JSON (stages.reeb)
+  --batch DIR_OR_LIST        skeletonize every mesh of a folder (.off, .obj, .ply, .stl), or
+                             every path listed in a text file (one per line), writing
+                             OUT_DIR/NAME.json for each, on all cores; one JSON summary line
+                             per mesh on standard output, a progress bar on a terminal
+  --threads N                batch mode: meshes skeletonized at once (default: the cores)
   --no-fill-holes            do not close the mesh's holes before voxelizing
   --peel-surface-voxels      drop the surface voxels whose centre is outside the mesh (opens
                              false loops between parts that nearly touch; default: kept)
@@ -137,6 +160,15 @@ T parse_number(const std::string& option, const std::string& text)
   return static_cast<T>(value);
 }
 
+int parse_thread_count(const std::string& text)
+{
+  int threads = 0;
+  std::istringstream in(text);
+  if(!(in >> threads) || !in.eof() || threads < 1 || threads > 1024)
+    throw Usage_error("option --threads needs an integer in [1, 1024], got '" + text + "'");
+  return threads;
+}
+
 Options parse_options(int argc, char** argv)
 {
   Options o;
@@ -158,6 +190,9 @@ Options parse_options(int argc, char** argv)
     else if(a == "--svg") o.svg = value();
     else if(a == "--svg-stage") o.svg_stage = value();
     else if(a == "--resolution") o.resolution = parse_number<int>(a, value());
+    else if(a == "--reeb") o.reeb_graph = true;
+    else if(a == "--batch") o.batch = value();
+    else if(a == "--threads") o.threads = parse_thread_count(value());
     else if(a == "--no-fill-holes") o.fill_holes = false;
     else if(a == "--peel-surface-voxels") o.keep_surface_voxels = false;
     else if(a == "--small-pieces") o.small_piece_fraction = parse_number<double>(a, value());
@@ -173,8 +208,19 @@ Options parse_options(int argc, char** argv)
     else
       throw Usage_error("more than one input mesh: '" + o.input + "' and '" + a + "'");
   }
-  if(o.input.empty())
+  if(!o.batch.empty())
+  {
+    if(!o.input.empty())
+      throw Usage_error("--batch takes its meshes from " + o.batch + ", not '" + o.input + "'");
+    if(o.output.empty())
+      throw Usage_error("--batch needs an output folder: -o OUT_DIR");
+    if(!o.svg.empty())
+      throw Usage_error("--svg draws one mesh; it cannot be used with --batch");
+  }
+  else if(o.input.empty())
     throw Usage_error("no input mesh (see --help)");
+  if(o.svg_stage == "reeb")
+    o.reeb_graph = true;
   return o;
 }
 
@@ -223,56 +269,116 @@ void write_file(const std::string& path, const std::string& text)
   }
 }
 
-int run(const Options& o)
+// The connected parts of the mesh: its vertices joined along edges, isolated vertices left
+// out (a union-find over the edges: PMP::connected_components() walks the faces through
+// property maps, and on a mesh of a million faces costs as much as the whole chain).
+std::size_t count_connected_parts(const Mesh& mesh)
 {
-  // Check the output's format before the work.
-  const bool to_json = o.output.empty() || ends_with(o.output, ".json");
-  if(!to_json && !ends_with(o.output, ".obj") && !ends_with(o.output, ".bvh") &&
-     !ends_with(o.output, ".polylines.txt"))
-    throw Usage_error(o.output + ": unknown output format (use .json, .obj, .bvh or .polylines.txt)");
-  if(!o.svg.empty() && !ends_with(o.svg, ".svg"))
-    throw Usage_error(o.svg + ": the preview must be an .svg file");
-  if(o.svg_stage != "control" && o.svg_stage != "pruned" && o.svg_stage != "thinned" && o.svg_stage != "reeb")
-    throw Usage_error("--svg-stage must be control, pruned, thinned or reeb, got '" + o.svg_stage + "'");
+  const std::size_t n = mesh.number_of_vertices();
+  std::vector<std::size_t> rank(n), parent(n);
+  boost::disjoint_sets<std::size_t*, std::size_t*> parts(rank.data(), parent.data());
+  std::size_t parts_count = 0;
+  for(vertex_descriptor v : vertices(mesh))
+    if(!mesh.is_isolated(v))
+    {
+      parts.make_set(std::size_t(v));
+      ++parts_count;
+    }
+  for(auto e : edges(mesh))
+  {
+    const std::size_t a = parts.find_set(std::size_t(source(e, mesh))), b = parts.find_set(std::size_t(target(e, mesh)));
+    if(a != b)
+    {
+      parts.link(a, b);
+      --parts_count;
+    }
+  }
+  return parts_count;
+}
 
-  const Mesh mesh = read_mesh(o.input);
+// What one mesh gave, for the summary line and the batch's report.
+struct Mesh_summary
+{
+  std::size_t vertices = 0, faces = 0, joints = 0, bones = 0;
+  double read_ms = 0, chain_ms = 0;
+};
+
+double milliseconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+void check_output_format(const std::string& output)
+{
+  if(!output.empty() && !ends_with(output, ".json") && !ends_with(output, ".obj") && !ends_with(output, ".bvh") &&
+     !ends_with(output, ".polylines.txt"))
+    throw Usage_error(output + ": unknown output format (use .json, .obj, .bvh or .polylines.txt)");
+}
+
+// Skeletonizes `input` and writes `output` (standard output when empty) as `o` says.
+Mesh_summary skeletonize(const Options& o, const std::string& input, const std::string& output)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const bool to_json = output.empty() || ends_with(output, ".json");
+  const Mesh mesh = read_mesh(input);
+  Mesh_summary summary;
+  summary.read_ms = milliseconds_since(start);
   gs::Curve_skeleton<Point, vertex_descriptor> curve, thinned;
   gs::Reeb_graph<Mesh> reeb;
   gs::Control_skeleton<Point> control;
   gs::Control_skeleton_report report;
+  // The thinned graph and the Reeb graph cost as much as the chain on large meshes: each is
+  // computed only when asked for (the picture of the thinned skeleton, --reeb).
+  const bool thinned_graph = o.svg_stage == "thinned" && !o.svg.empty();
   try
   {
-    report = gs::extract_control_skeleton(
-        mesh, control,
-        params::combine(params::resolution(o.resolution), params::fill_holes(o.fill_holes),
-                        params::keep_surface_voxels(o.keep_surface_voxels),
-                        params::small_piece_fraction(o.small_piece_fraction),
-                        params::spur_length_factor(o.spur_length_factor),
-                        params::smoothing_window(o.smoothing_window),
-                        params::bend_threshold(o.bend_threshold),
-                        params::straightness_tolerance(o.straightness_tolerance),
-                        params::minimum_bone_length_factor(o.minimum_bone_length_factor),
-                        params::number_of_reeb_intervals(o.reeb_intervals),
-                        params::curve_skeleton_output(&curve), params::thinned_skeleton_output(&thinned),
-                        params::reeb_graph_output(&reeb)));
+    const auto np = params::combine(
+        params::resolution(o.resolution), params::fill_holes(o.fill_holes),
+        params::keep_surface_voxels(o.keep_surface_voxels), params::small_piece_fraction(o.small_piece_fraction),
+        params::spur_length_factor(o.spur_length_factor), params::smoothing_window(o.smoothing_window),
+        params::bend_threshold(o.bend_threshold), params::straightness_tolerance(o.straightness_tolerance),
+        params::minimum_bone_length_factor(o.minimum_bone_length_factor),
+        params::number_of_reeb_intervals(o.reeb_intervals), params::curve_skeleton_output(&curve));
+    if(o.reeb_graph && thinned_graph)
+      report = gs::extract_control_skeleton(
+          mesh, control,
+          params::combine(np, params::thinned_skeleton_output(&thinned), params::reeb_graph_output(&reeb)));
+    else if(o.reeb_graph)
+      report = gs::extract_control_skeleton(mesh, control, params::combine(np, params::reeb_graph_output(&reeb)));
+    else if(thinned_graph)
+      report = gs::extract_control_skeleton(mesh, control, params::combine(np, params::thinned_skeleton_output(&thinned)));
+    else
+      report = gs::extract_control_skeleton(mesh, control, np);
   }
   catch(const std::exception& e) // the stages' messages name the stage and the problem
   {
-    throw Usage_error(o.input + ": " + e.what());
+    throw Usage_error(input + ": " + e.what());
   }
 
   std::string text;
   if(to_json)
   {
-    std::vector<std::size_t> face_component(num_faces(mesh));
-    const std::size_t components = PMP::connected_components(
-        mesh, boost::make_iterator_property_map(face_component.begin(), get(CGAL::face_index, mesh)));
-    nlohmann::json timings{{"total", report.total_ms}};
+    const std::size_t components = count_connected_parts(mesh);
+    nlohmann::json timings{{"total", report.total_ms}, {"read", summary.read_ms}};
     for(const auto& [stage, ms] : report.timings_ms)
       timings[stage] = ms;
+    nlohmann::json stages = {
+        {"solid", {{"voxels", report.solid_voxels}, {"pieces", report.small_pieces.pieces},
+                   {"small_pieces_removed", report.small_pieces.removed_pieces}}},
+        {"thinned", stage_json(report.thinned)},
+        {"spurious_cycles", {{"cut", report.spurious_cycles_cut}}},
+        {"pruned", stage_json(report.pruned)}};
+    nlohmann::json computed = {"curve_skeleton", "control_skeleton"};
+    if(o.reeb_graph)
+    {
+      stages["reeb"] = {{"nodes", report.reeb_nodes}, {"edges", report.reeb_edges}};
+      computed.push_back("reeb_graph");
+    }
+    if(thinned_graph)
+      computed.push_back("thinned_graph");
     const nlohmann::json control_json = gs::IO::control_skeleton_to_json(control);
     const nlohmann::json json = {
-        {"input", o.input},
+        {"input", input},
         {"mesh", {{"vertices", num_vertices(mesh)}, {"faces", num_faces(mesh)},
                   {"closed", CGAL::is_closed(mesh)}, {"components", components}}},
         {"parameters", {{"resolution", o.resolution}, {"fill_holes", o.fill_holes},
@@ -284,13 +390,9 @@ int run(const Options& o)
                         {"straightness_tolerance", o.straightness_tolerance},
                         {"minimum_bone_length_factor", o.minimum_bone_length_factor},
                         {"reeb_intervals", o.reeb_intervals}, {"voxel_size", report.voxel_size}}},
+        {"computed", computed},
         {"timings_ms", timings},
-        {"stages", {{"solid", {{"voxels", report.solid_voxels}, {"pieces", report.small_pieces.pieces},
-                               {"small_pieces_removed", report.small_pieces.removed_pieces}}},
-                    {"thinned", stage_json(report.thinned)},
-                    {"spurious_cycles", {{"cut", report.spurious_cycles_cut}}},
-                    {"pruned", stage_json(report.pruned)},
-                    {"reeb", {{"nodes", report.reeb_nodes}, {"edges", report.reeb_edges}}}}},
+        {"stages", stages},
         {"skeleton", gs::IO::curve_skeleton_to_json(curve)},
         {"control", {{"joints", control_json["joints"]}, {"bones", control_json["bones"]},
                      {"cut_bones", control_json["cut_bones"]}, {"roots", control_json["roots"]}}}};
@@ -299,9 +401,9 @@ int run(const Options& o)
   else
   {
     std::ostringstream out;
-    if(ends_with(o.output, ".obj"))
+    if(ends_with(output, ".obj"))
       gs::IO::write_OBJ(out, control);
-    else if(ends_with(o.output, ".bvh"))
+    else if(ends_with(output, ".bvh"))
       gs::IO::write_BVH(out, control);
     else
       gs::IO::write_polylines(out, control);
@@ -311,7 +413,7 @@ int run(const Options& o)
   if(!o.svg.empty())
   {
     std::ostringstream picture;
-    const std::string name = o.input.substr(o.input.find_last_of('/') + 1);
+    const std::string name = input.substr(input.find_last_of('/') + 1);
     if(o.svg_stage == "control")
       gs::IO::write_svg_preview(picture, mesh, control, 360,
                                 name + ": control skeleton, " + std::to_string(control.bones.size()) + " bones");
@@ -329,25 +431,206 @@ int run(const Options& o)
                                              std::to_string(num_vertices(reeb)) + " nodes");
     write_file(o.svg, picture.str());
   }
-  if(o.output.empty())
+  if(output.empty())
     std::cout << text;
   else
-    write_file(o.output, text);
+    write_file(output, text);
 
-  std::cerr << "skeletonize: " << o.input << ": " << num_vertices(mesh) << " vertices, "
-            << report.solid_voxels << " solid voxels, " << report.thinned.points << " thinned points, "
-            << report.pruned.points << " pruned points, " << control.joints.size() << " joints, "
-            << control.bones.size() << " bones, " << report.total_ms << " ms\n";
+  summary.vertices = num_vertices(mesh);
+  summary.faces = num_faces(mesh);
+  summary.joints = control.joints.size();
+  summary.bones = control.bones.size();
+  summary.chain_ms = report.total_ms;
+  if(o.batch.empty())
+    std::cerr << "skeletonize: " << input << ": " << num_vertices(mesh) << " vertices, " << report.solid_voxels
+              << " solid voxels, " << report.thinned.points << " thinned points, " << report.pruned.points
+              << " pruned points, " << control.joints.size() << " joints, " << control.bones.size() << " bones, "
+              << summary.read_ms << " ms reading, " << report.total_ms << " ms skeletonizing\n";
+  return summary;
+}
+
+int run(const Options& o)
+{
+  // Check the output's format and the picture's options before the work.
+  check_output_format(o.output);
+  if(!o.svg.empty() && !ends_with(o.svg, ".svg"))
+    throw Usage_error(o.svg + ": the preview must be an .svg file");
+  if(o.svg_stage != "control" && o.svg_stage != "pruned" && o.svg_stage != "thinned" && o.svg_stage != "reeb")
+    throw Usage_error("--svg-stage must be control, pruned, thinned or reeb, got '" + o.svg_stage + "'");
+  skeletonize(o, o.input, o.output);
   return 0;
+}
+
+// ---- Batch mode ------------------------------------------------------------------------
+
+bool is_mesh_file(const std::filesystem::path& path)
+{
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return extension == ".off" || extension == ".obj" || extension == ".ply" || extension == ".stl";
+}
+
+// The meshes of a batch: the mesh files of a folder, by name, or the lines of a list file
+// (blank lines and lines starting with '#' skipped; relative paths are relative to the
+// list's folder).
+std::vector<std::string> batch_inputs(const std::string& batch)
+{
+  namespace fs = std::filesystem;
+  std::error_code error;
+  std::vector<std::string> inputs;
+  if(fs::is_directory(batch, error))
+  {
+    for(const fs::directory_entry& entry : fs::directory_iterator(batch, error))
+      if(entry.is_regular_file(error) && is_mesh_file(entry.path()))
+        inputs.push_back(entry.path().string());
+    if(error)
+      throw Usage_error(batch + ": cannot list the folder: " + error.message());
+    std::sort(inputs.begin(), inputs.end());
+  }
+  else
+  {
+    std::ifstream list(batch);
+    if(!list)
+      throw Usage_error(batch + ": no such folder or list file");
+    const fs::path folder = fs::path(batch).parent_path();
+    for(std::string line; std::getline(list, line);)
+    {
+      line.erase(0, line.find_first_not_of(" \t\r"));
+      line.erase(line.find_last_not_of(" \t\r") + 1);
+      if(line.empty() || line[0] == '#')
+        continue;
+      const fs::path path(line);
+      inputs.push_back(path.is_absolute() || folder.empty() ? line : (folder / path).string());
+    }
+  }
+  if(inputs.empty())
+    throw Usage_error(batch + ": no meshes to skeletonize (.off, .obj, .ply, .stl)");
+  return inputs;
+}
+
+// OUT_DIR/NAME.json for each input; a second mesh of the same name gets NAME-2.json, etc.
+std::vector<std::string> batch_outputs(const std::vector<std::string>& inputs, const std::string& folder)
+{
+  namespace fs = std::filesystem;
+  std::map<std::string, int> uses;
+  std::vector<std::string> outputs;
+  for(const std::string& input : inputs)
+  {
+    const std::string stem = fs::path(input).stem().string();
+    const int n = ++uses[stem];
+    outputs.push_back((fs::path(folder) / (stem + (n > 1 ? "-" + std::to_string(n) : "") + ".json")).string());
+  }
+  return outputs;
+}
+
+// Prints the summary lines in the order of the inputs, whatever order the meshes finish
+// in, and a progress bar on standard error when it is a terminal.
+class Batch_report
+{
+public:
+  explicit Batch_report(std::size_t meshes)
+    : m_lines(meshes), m_ready(meshes, false), m_progress_bar(isatty(fileno(stderr)) != 0)
+  {}
+
+  void finished(std::size_t i, std::string line, bool failed)
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_lines[i] = std::move(line);
+    m_ready[i] = true;
+    ++m_done;
+    m_failed += failed;
+    if(m_progress_bar)
+      std::cerr << "\r\033[K";
+    for(; m_printed < m_lines.size() && m_ready[m_printed]; ++m_printed)
+      std::cout << m_lines[m_printed] << std::endl;
+    if(m_progress_bar)
+      draw_bar();
+  }
+  std::size_t failed() const { return m_failed; }
+  void close()
+  {
+    if(m_progress_bar)
+      std::cerr << "\r\033[K";
+  }
+
+private:
+  void draw_bar()
+  {
+    const std::size_t width = 30, filled = width * m_done / m_lines.size();
+    std::cerr << "[" << std::string(filled, '#') << std::string(width - filled, ' ') << "] " << m_done << "/"
+              << m_lines.size() << " meshes" << (m_failed ? ", " + std::to_string(m_failed) + " failed" : "")
+              << std::flush;
+  }
+
+  std::mutex m_mutex;
+  std::vector<std::string> m_lines;
+  std::vector<bool> m_ready;
+  std::size_t m_printed = 0, m_done = 0, m_failed = 0;
+  bool m_progress_bar;
+};
+
+// Skeletonizes every mesh of the batch, several at once; a mesh that fails is reported
+// and the batch goes on. Exit code 1 when any mesh failed.
+int run_batch(const Options& o)
+{
+  const std::vector<std::string> inputs = batch_inputs(o.batch);
+  std::error_code error;
+  std::filesystem::create_directories(o.output, error);
+  if(!std::filesystem::is_directory(o.output))
+    throw Usage_error(o.output + ": cannot create the output folder");
+  const std::vector<std::string> outputs = batch_outputs(inputs, o.output);
+
+  const auto start = std::chrono::steady_clock::now();
+  Batch_report report(inputs.size());
+  const long count = static_cast<long>(inputs.size());
+#if defined(_OPENMP)
+  const int threads = o.threads > 0 ? o.threads : omp_get_num_procs();
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+#endif
+  for(long i = 0; i < count; ++i)
+  {
+    const auto mesh_start = std::chrono::steady_clock::now();
+    nlohmann::json line = {{"input", inputs[i]}};
+    bool failed = false;
+    try
+    {
+      const Mesh_summary s = skeletonize(o, inputs[i], outputs[i]);
+      line.update({{"ok", true}, {"output", outputs[i]}, {"vertices", s.vertices}, {"faces", s.faces},
+                   {"joints", s.joints}, {"bones", s.bones}, {"read_ms", s.read_ms}, {"chain_ms", s.chain_ms}});
+    }
+    catch(const std::exception& e)
+    {
+      failed = true;
+      line.update({{"ok", false}, {"error", e.what()}});
+    }
+    line["wall_ms"] = milliseconds_since(mesh_start);
+    report.finished(std::size_t(i), line.dump(), failed);
+  }
+  report.close();
+  const double seconds = milliseconds_since(start) / 1000;
+  std::cerr << "skeletonize: " << inputs.size() - report.failed() << " of " << inputs.size()
+            << " meshes skeletonized in " << seconds << " s (" << double(inputs.size()) / seconds
+            << " meshes/s)" << (report.failed() ? ", " + std::to_string(report.failed()) + " failed" : "") << "\n";
+  return report.failed() == 0 ? 0 : 1;
 }
 
 } // namespace
 
 int main(int argc, char** argv)
 {
+#if defined(__GLIBC__)
+  // Keep freed memory in the heap for the next stage instead of handing it back to the
+  // system: the reader's arrays are freed before the chain allocates its own, and on a
+  // virtual machine a fresh page can cost more than the work done in it (measured in
+  // benchmark/README.md).
+  mallopt(M_MMAP_MAX, 0); // big arrays come from the heap too, and go back to it
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+#endif
   try
   {
-    return run(parse_options(argc, argv));
+    const Options options = parse_options(argc, argv);
+    return options.batch.empty() ? run(options) : run_batch(options);
   }
   catch(const Usage_error& e)
   {

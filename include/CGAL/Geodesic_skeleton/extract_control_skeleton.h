@@ -34,6 +34,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -254,8 +255,8 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, mesh));
   const double memory_limit = internal::memory_limit(np);
-  internal::Grid_line_crossings grid_lines(std::move(rasterised.in_grid));
-  auto mesh_lines = [&grid_lines]() -> internal::Grid_line_crossings& { return grid_lines; };
+  std::optional<internal::Grid_line_crossings> grid_lines(std::in_place, std::move(rasterised.in_grid));
+  auto mesh_lines = [&grid_lines]() -> internal::Grid_line_crossings& { return *grid_lines; };
   if constexpr(!is_default_parameter<NamedParameters, internal_np::thinned_skeleton_output_t>::value)
   {
     Skeleton thinned;
@@ -280,6 +281,7 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   Skeleton curve;
   internal::to_graph_impl(skeleton, distances, mesh, curve, vpm, memory_limit, mesh_lines);
   report.pruned = skeleton_statistics(curve);
+  grid_lines.reset(); // as large as the mesh: freed before the joints' inside test reads it
   clock.finished("to_graph");
 
   smooth_skeleton(curve, np);
@@ -287,8 +289,8 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
 
   split_into_bones(curve, out, np);
   clock.finished("split_into_bones");
-  report.joints_moved_inside = internal::move_joints_inside(
-      mesh, std::move(rasterised.faces_in_world), out, 0.25 * report.voxel_size, 2 * report.voxel_size);
+  report.joints_moved_inside =
+      internal::move_joints_inside(mesh, vpm, out, 0.25 * report.voxel_size, 2 * report.voxel_size);
   clock.finished("joints_inside");
   if constexpr(!is_default_parameter<NamedParameters, internal_np::curve_skeleton_output_t>::value)
     *get_parameter(np, internal_np::curve_skeleton_output_tag) = std::move(curve);

@@ -206,13 +206,8 @@ std::size_t voxelize_impl(const FaceGraph& mesh, VoxelSet& voxels, const NamedPa
                            "a grid (resolution " + std::to_string(resolution) + ")");
 
   std::vector<std::uint8_t> labels(layout.volume(), internal::EMPTY);
-  std::vector<internal::Triangle3> grid_triangles = internal::to_grid(triangles, frame);
-  triangles.resize(mesh_triangle_count); // the faces' (the fans' are only rasterised)
-  if(rasterised == nullptr)
-  {
-    triangles.clear();
-    triangles.shrink_to_fit();
-  }
+  std::vector<internal::Triangle3>& grid_triangles = triangles;
+  internal::to_grid(grid_triangles, frame);
   internal::rasterize(grid_triangles, 0, mesh_triangle_count, layout, internal::SURFACE, labels);
   internal::rasterize(grid_triangles, mesh_triangle_count, grid_triangles.size(), layout,
                       internal::FAN, labels);
@@ -256,10 +251,7 @@ std::size_t voxelize_impl(const FaceGraph& mesh, VoxelSet& voxels, const NamedPa
     }
   });
   if(rasterised != nullptr)
-  {
-    rasterised->faces_in_world = std::move(triangles);
     rasterised->in_grid = std::move(grid_triangles);
-  }
   return count;
 }
 

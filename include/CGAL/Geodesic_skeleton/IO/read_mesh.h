@@ -8,6 +8,8 @@
 /// Reads a mesh file as `skeletonize` does: any format CGAL reads, repaired when it is not
 /// a clean manifold, with a clear error for a file that holds no usable mesh.
 
+#include <CGAL/Geodesic_skeleton/IO/internal/fast_soup_readers.h>
+#include <CGAL/Geodesic_skeleton/IO/internal/indexed_soup.h>
 #include <CGAL/Geodesic_skeleton/IO/internal/mesh_file_checks.h>
 
 #include <CGAL/IO/polygon_soup_io.h>
@@ -69,47 +71,29 @@ inline bool binary_STL_has_non_finite_coordinate(const std::string& path)
 
 } // namespace internal
 
-/// \ingroup PkgGeodesicSkeletonRef
-/// Reads the mesh file `path` (OFF, OBJ, PLY, STL, ...: any format CGAL reads, by its
-/// extension) into `mesh` (cleared first). A file that is not a clean manifold (as artists'
-/// meshes often are: non-manifold edges or vertices, duplicated faces, inconsistent
-/// orientation) is read as a polygon soup, repaired (`repair_polygon_soup()`: duplicated
-/// and degenerate polygons go), oriented (`orient_polygon_soup()`: non-manifold vertices and
-/// edges are split) and turned into a mesh. Before CGAL's readers see it, a PLY header and
-/// an ASCII OFF file are checked for what those readers trust (element and face counts,
-/// face sizes and indices, property types, colours): files the package's fuzzer found to
-/// crash, hang or overrun them are refused with the reason (see `fuzz/README.md`).
-///
-/// \tparam PolygonMesh a model of `MutableFaceGraph` with a vertex point map
-///         (`Surface_mesh`, `Polyhedron_3`, ...).
-/// \throws std::runtime_error with a message "PATH: problem" when the file cannot be
-///         opened, cannot be parsed (empty, garbage, wrong counts), has a non-finite
-///         coordinate or a face that refers to a vertex that does not exist, or holds no
-///         face.
-template <typename PolygonMesh>
-void read_mesh(const std::string& path, PolygonMesh& mesh)
+namespace internal {
+
+// Reads `path` with CGAL's readers, after the checks of mesh_file_checks.h, into a soup
+// whose coordinates are finite and whose indices exist; throws "PATH: problem" otherwise.
+template <typename Point>
+void read_soup_with_CGAL(const std::string& path, std::vector<Point>& points,
+                         std::vector<std::vector<std::size_t>>& polygons)
 {
-  using Point = typename boost::property_traits<
-      typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>::value_type;
   auto fail = [&](const std::string& problem) { throw std::runtime_error(path + ": " + problem); };
   auto finite = [](const Point& p) {
     return std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y())) &&
            std::isfinite(CGAL::to_double(p.z()));
   };
-  if(!std::ifstream(path))
-    fail("cannot open the file");
-  if(internal::binary_STL_has_non_finite_coordinate(path))
+  if(binary_STL_has_non_finite_coordinate(path))
     fail("a vertex has a non-finite coordinate (NaN or infinite)");
-  if(internal::file_extension(path) == "ply")
-    if(const std::string problem = internal::ply_header_problem(path); !problem.empty())
+  if(file_extension(path) == "ply")
+    if(const std::string problem = ply_header_problem(path); !problem.empty())
       fail("the file cannot be parsed as a mesh: " + problem);
-  if(internal::file_extension(path) == "off")
-    if(const std::string problem = internal::off_file_problem(path); !problem.empty())
+  if(file_extension(path) == "off")
+    if(const std::string problem = off_file_problem(path); !problem.empty())
       fail("the file cannot be parsed as a mesh: " + problem);
   // Read the soup first, so that its indices and coordinates are checked before CGAL builds
   // anything from them (a face index past the vertices would be read out of bounds).
-  std::vector<Point> points;
-  std::vector<std::vector<std::size_t>> polygons;
   if(!CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false)))
     fail("the file cannot be parsed as a mesh (OFF, OBJ, PLY, STL, ...)");
   for(const Point& p : points)
@@ -122,17 +106,86 @@ void read_mesh(const std::string& path, PolygonMesh& mesh)
              std::to_string(points.size()) + " vertices");
   if(polygons.empty())
     fail("the mesh has no faces");
+}
+
+// Turns a soup that is not an oriented manifold mesh into one: duplicated and degenerate
+// polygons go, non-manifold vertices and edges are split, the orientation is made
+// consistent where it can be.
+template <typename Point, typename PolygonMesh>
+void repair_soup_into_mesh(const std::string& path, std::vector<Point>& points,
+                           std::vector<std::vector<std::size_t>>& polygons, PolygonMesh& mesh)
+{
   clear(mesh);
-  if(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
-  {
-    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-    return;
-  }
   CGAL::Polygon_mesh_processing::repair_polygon_soup(points, polygons);
   CGAL::Polygon_mesh_processing::orient_polygon_soup(points, polygons);
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
   if(num_faces(mesh) == 0)
-    fail("the mesh has no faces (every face is degenerate)");
+    throw std::runtime_error(path + ": the mesh has no faces (every face is degenerate)");
+}
+
+} // namespace internal
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// Reads the mesh file `path` (OFF, OBJ, PLY, STL, ...: any format CGAL reads, by its
+/// extension) into `mesh` (cleared first). A file that is not a clean manifold (as artists'
+/// meshes often are: non-manifold edges or vertices, duplicated faces, inconsistent
+/// orientation) is read as a polygon soup, repaired (`repair_polygon_soup()`: duplicated
+/// and degenerate polygons go), oriented (`orient_polygon_soup()`: non-manifold vertices and
+/// edges are split) and turned into a mesh. Before CGAL's readers see it, a PLY header and
+/// an ASCII OFF file are checked for what those readers trust (element and face counts,
+/// face sizes and indices, property types, colours): files the package's fuzzer found to
+/// crash, hang or overrun them are refused with the reason (see `fuzz/README.md`).
+///
+/// The common forms are read by the package's own fast readers (plain ASCII OFF, OBJ,
+/// little-endian binary STL): the file in one read, numbers parsed without streams, and,
+/// when the faces already form an oriented manifold mesh (checked in linear time), the
+/// mesh built directly from them. Any other form, and any file they find a problem in,
+/// goes through CGAL's readers and the checks above; both paths give the same mesh, with
+/// point i of the file as vertex i and face j as face j.
+///
+/// \tparam PolygonMesh a model of `MutableFaceGraph` with a vertex point map
+///         (`Surface_mesh`, `Polyhedron_3`, ...).
+/// \throws std::runtime_error with a message "PATH: problem" when the file cannot be
+///         opened, cannot be parsed (empty, garbage, wrong counts), has a non-finite
+///         coordinate or a face that refers to a vertex that does not exist, or holds no
+///         face.
+///
+/// \b Complexity: linear in the size of the file for a manifold mesh in a common form;
+/// O(n log n) otherwise (CGAL's readers and repair).
+template <typename PolygonMesh>
+void read_mesh(const std::string& path, PolygonMesh& mesh)
+{
+  using Point = typename boost::property_traits<
+      typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>::value_type;
+  if(!std::ifstream(path))
+    throw std::runtime_error(path + ": cannot open the file");
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  internal::Indexed_soup soup;
+  if(internal::read_soup_fast(path, internal::file_extension(path), soup))
+  {
+    const internal::Directed_edge_table edges(soup);
+    if(internal::is_oriented_manifold(soup, edges))
+    {
+      internal::build_mesh_from_manifold_soup(soup, edges, mesh, get(CGAL::vertex_point, mesh));
+      return;
+    }
+    points.reserve(soup.points.size());
+    for(const auto& p : soup.points)
+      points.emplace_back(p[0], p[1], p[2]);
+    polygons.resize(soup.number_of_polygons());
+    for(std::size_t f = 0; f < polygons.size(); ++f)
+      polygons[f].assign(soup.corners.begin() + soup.offsets[f], soup.corners.begin() + soup.offsets[f + 1]);
+  }
+  else
+    internal::read_soup_with_CGAL(path, points, polygons);
+  if(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
+  {
+    clear(mesh);
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+    return;
+  }
+  internal::repair_soup_into_mesh(path, points, polygons, mesh);
 }
 
 } // namespace IO

@@ -5,6 +5,7 @@
 #define CGAL_GEODESIC_SKELETON_INTERNAL_CLOSED_MESH_INTERIOR_H
 
 #include <CGAL/Geodesic_skeleton/Control_skeleton.h>
+#include <CGAL/Geodesic_skeleton/internal/mesh_triangles.h>
 #include <CGAL/Geodesic_skeleton/internal/principal_frame.h>
 #include <CGAL/Geodesic_skeleton/internal/triangle_box_overlap.h>
 
@@ -65,13 +66,12 @@ inline const std::array<Vec3, 5>& ray_directions()
   return directions;
 }
 
-// Ray parity against a closed triangle soup (with the boxes of its triangles): odd
-// crossings along a ray means inside. Rays go along the axes first, so that a triangle
+// Ray parity against a closed triangle soup: odd crossings along a ray means inside. Rays go along the axes first, so that a triangle
 // whose box misses the ray's line is skipped with a few comparisons. A ray that passes too
 // near an edge or a vertex of a triangle is dropped and another direction tried, from
 // `first_direction` on. Costs O(F) per query: meant for the few points in doubt.
 inline bool is_inside_closed_soup(const Vec3& p, const std::vector<Triangle3>& triangles,
-                                  const std::vector<Triangle_box>& boxes, int first_direction = 0)
+                                  int first_direction = 0)
 {
   for(int axis = first_direction; axis < 5; ++axis)
   {
@@ -80,7 +80,7 @@ inline bool is_inside_closed_soup(const Vec3& p, const std::vector<Triangle3>& t
     std::size_t crossings = 0;
     for(std::size_t i = 0; i < triangles.size() && !ambiguous; ++i)
     {
-      if(axis < 3 && !box_meets_axis_ray(p, axis, boxes[i]))
+      if(axis < 3 && !box_meets_axis_ray(p, axis, Triangle_box(triangles[i])))
         continue;
       const Ray_meets meets = ray_meets_triangle(p, d, triangles[i]);
       ambiguous = meets == Ray_meets::unclear;
@@ -137,9 +137,6 @@ public:
     if(!CGAL::is_closed(mesh) || !CGAL::is_triangle_mesh(mesh))
       return;
     m_triangles = std::move(face_triangles);
-    m_boxes.reserve(m_triangles.size());
-    for(const Triangle3& t : m_triangles)
-      m_boxes.emplace_back(t);
   }
 
   bool has_interior() const { return !m_triangles.empty(); }
@@ -157,7 +154,7 @@ public:
     std::vector<bool> unclear(points.size(), false);
     for(std::size_t i = 0; i < m_triangles.size(); ++i)
     {
-      const Triangle_box& box = m_boxes[i];
+      const Triangle_box box(m_triangles[i]); // (not stored: as large as the mesh)
       auto k = std::lower_bound(by_y.begin(), by_y.end(), box.lo[1],
                                 [&](std::size_t a, double y) { return points[a][1] < y; });
       for(; k != by_y.end() && points[*k][1] <= box.hi[1]; ++k)
@@ -171,7 +168,7 @@ public:
     }
     std::vector<bool> in(points.size());
     for(std::size_t k = 0; k < points.size(); ++k)
-      in[k] = unclear[k] ? is_inside_closed_soup(points[k], m_triangles, m_boxes, 1) : crossings[k] % 2 == 1;
+      in[k] = unclear[k] ? is_inside_closed_soup(points[k], m_triangles, 1) : crossings[k] % 2 == 1;
     return in;
   }
 
@@ -202,7 +199,7 @@ public:
     {
       const Vec3 candidate{nearest[0] + step * in[0] / length, nearest[1] + step * in[1] / length,
                            nearest[2] + step * in[2] / length};
-      if(is_inside_closed_soup(candidate, m_triangles, m_boxes))
+      if(is_inside_closed_soup(candidate, m_triangles))
       {
         p = candidate;
         return true;
@@ -213,7 +210,6 @@ public:
 
 private:
   std::vector<Triangle3> m_triangles;
-  std::vector<Triangle_box> m_boxes;
 };
 
 // Moves every joint that lies outside a closed triangle mesh (a limb thinner than a couple
@@ -222,19 +218,19 @@ private:
 // in doubt: a deeper one sits inside. The bones' end points follow their joints. Returns
 // how many joints moved.
 //
-// `face_triangles` are the faces of `mesh` in world coordinates (mesh_triangles()).
+// The faces of `mesh` are read (mesh_triangles()) only when a joint is in doubt.
 //
 // Complexity: O(F log D + C) for D doubtful joints, F faces and C pairs of a joint and a
 // face that its ray along x may cross, plus O(F) for each joint moved (limb tips).
-template <typename TriangleMesh, typename Point>
-std::size_t move_joints_inside(const TriangleMesh& mesh, std::vector<Triangle3> face_triangles,
-                               Control_skeleton<Point>& control, double depth, double deep_radius)
+template <typename TriangleMesh, typename VertexPointMap, typename Point>
+std::size_t move_joints_inside(const TriangleMesh& mesh, VertexPointMap vpm, Control_skeleton<Point>& control,
+                               double depth, double deep_radius)
 {
   const bool doubt = std::any_of(control.joints.begin(), control.joints.end(),
                                  [&](const Control_joint<Point>& j) { return j.radius < deep_radius; });
-  if(!doubt)
+  if(!doubt || !CGAL::is_closed(mesh) || !CGAL::is_triangle_mesh(mesh))
     return 0;
-  const Closed_mesh_interior interior(mesh, std::move(face_triangles));
+  const Closed_mesh_interior interior(mesh, mesh_triangles(mesh, vpm, "extract_control_skeleton"));
   if(!interior.has_interior())
     return 0;
   std::vector<std::size_t> doubtful;

@@ -115,23 +115,20 @@ std::size_t close_holes(const FaceGraph& mesh, VertexPointMap vpm, std::vector<T
   return holes;
 }
 
-// The triangles that voxelize() rasterised, for the later stages of the pipeline: the
-// faces' in world coordinates (as mesh_triangles() gives them), and all of them, the faces'
-// then the hole-filling fans', in the grid coordinates of the voxels' frame.
+// The triangles that voxelize() rasterised, for the later inside tests of the pipeline:
+// the faces' then the hole-filling fans', in the grid coordinates of the voxels' frame.
 struct Rasterised_triangles
 {
-  std::vector<Triangle3> faces_in_world;
   std::vector<Triangle3> in_grid;
 };
 
-// The triangles in grid coordinates (`frame.to_grid` of their corners).
-inline std::vector<Triangle3> to_grid(const std::vector<Triangle3>& triangles, const Voxel_frame& frame)
+// Moves the triangles into grid coordinates (`frame.to_grid` of their corners), in place:
+// a copy would be as large as the mesh.
+inline void to_grid(std::vector<Triangle3>& triangles, const Voxel_frame& frame)
 {
-  std::vector<Triangle3> g(triangles.size());
-  for(std::size_t i = 0; i < triangles.size(); ++i)
-    for(int c = 0; c < 3; ++c)
-      g[i][c] = frame.to_grid(triangles[i][c]);
-  return g;
+  for(Triangle3& t : triangles)
+    for(Vec3& corner : t)
+      corner = frame.to_grid(corner);
 }
 
 // The faces of `mesh` (and, with `fill_holes`, the fans that close its holes) in the grid
@@ -143,7 +140,8 @@ Grid_line_crossings mesh_grid_lines(const FaceGraph& mesh, VertexPointMap vpm, c
   std::vector<Triangle3> triangles = mesh_triangles(mesh, vpm, caller);
   if(fill_holes)
     close_holes(mesh, vpm, triangles);
-  return Grid_line_crossings(to_grid(triangles, frame));
+  to_grid(triangles, frame);
+  return Grid_line_crossings(std::move(triangles));
 }
 
 // mesh_grid_lines(), built on first use: the stages that need inside tests only sometimes

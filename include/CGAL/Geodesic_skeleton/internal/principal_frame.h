@@ -69,24 +69,24 @@ inline Principal_frame principal_frame(const std::vector<Triangle3>& world_trian
         << min_mesh_size << " across: scale the mesh";
     throw std::invalid_argument(msg.str());
   }
-  std::vector<Triangle3> triangles(world_triangles.size());
-  for(std::size_t i = 0; i < triangles.size(); ++i)
-    for(int j = 0; j < 3; ++j)
-      for(int c = 0; c < 3; ++c)
-        triangles[i][j][c] = (world_triangles[i][j][c] - centre[c]) / size;
+  // The triangles are centred and scaled to unit size on the fly (a copy of them would be
+  // as large as the mesh), each value by the same expression at each use.
+  auto corner = [&](const Triangle3& t, int j, int c) { return (t[j][c] - centre[c]) / size; };
+  auto area_of = [&](const Triangle3& w) {
+    const Triangle3 t = {Vec3{corner(w, 0, 0), corner(w, 0, 1), corner(w, 0, 2)},
+                         Vec3{corner(w, 1, 0), corner(w, 1, 1), corner(w, 1, 2)},
+                         Vec3{corner(w, 2, 0), corner(w, 2, 1), corner(w, 2, 2)}};
+    return 0.5 * std::sqrt(dot3(cross3(sub(t[1], t[0]), sub(t[2], t[0])), cross3(sub(t[1], t[0]), sub(t[2], t[0]))));
+  };
 
   double area_sum = 0;
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  std::vector<double> areas(triangles.size());
-  for(std::size_t i = 0; i < triangles.size(); ++i)
+  for(const Triangle3& t : world_triangles)
   {
-    const Triangle3& t = triangles[i];
-    const double area = 0.5 * std::sqrt(dot3(cross3(sub(t[1], t[0]), sub(t[2], t[0])),
-                                             cross3(sub(t[1], t[0]), sub(t[2], t[0]))));
-    areas[i] = area;
+    const double area = area_of(t);
     area_sum += area;
     for(int c = 0; c < 3; ++c)
-      centroid[c] += area * (t[0][c] + t[1][c] + t[2][c]) / 3.;
+      centroid[c] += area * (corner(t, 0, c) + corner(t, 1, c) + corner(t, 2, c)) / 3.;
   }
   if(!(area_sum > 0) || !std::isfinite(area_sum))
     throw std::invalid_argument(std::string(caller) +
@@ -97,16 +97,16 @@ inline Principal_frame principal_frame(const std::vector<Triangle3>& world_trian
   // with s the sum of its vertices.
   // (Six sums: the matrix is symmetric.)
   double moment[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-  for(std::size_t i = 0; i < triangles.size(); ++i)
+  for(const Triangle3& t : world_triangles)
   {
     double v[3][3], s[3];
     for(int c = 0; c < 3; ++c)
     {
       for(int j = 0; j < 3; ++j)
-        v[j][c] = triangles[i][j][c] - centroid[c];
+        v[j][c] = corner(t, j, c) - centroid[c];
       s[c] = (v[0][c] + v[1][c]) + v[2][c];
     }
-    const double weight = areas[i] / 12.;
+    const double weight = area_of(t) / 12.;
     for(int r = 0; r < 3; ++r)
       for(int c = r; c < 3; ++c)
         moment[r][c] += weight * (((v[0][r] * v[0][c] + v[1][r] * v[1][c]) + v[2][r] * v[2][c]) + s[r] * s[c]);
@@ -129,11 +129,12 @@ inline Principal_frame principal_frame(const std::vector<Triangle3>& world_trian
   const Eigen::Vector3d axis[2] = {solver.eigenvectors().col(2).normalized(),
                                    solver.eigenvectors().col(1).normalized()};
   double third_moment[2] = {0, 0};
-  for(std::size_t i = 0; i < triangles.size(); ++i)
+  for(const Triangle3& w : world_triangles)
   {
     Eigen::Vector3d v[3];
     for(int j = 0; j < 3; ++j)
-      v[j] = Eigen::Vector3d(triangles[i][j][0], triangles[i][j][1], triangles[i][j][2]) - centroid;
+      v[j] = Eigen::Vector3d(corner(w, j, 0), corner(w, j, 1), corner(w, j, 2)) - centroid;
+    const double area = area_of(w);
     for(int a = 0; a < 2; ++a)
     {
       double t[3];
@@ -142,7 +143,7 @@ inline Principal_frame principal_frame(const std::vector<Triangle3>& world_trian
       const double h3 = t[0] * t[0] * t[0] + t[1] * t[1] * t[1] + t[2] * t[2] * t[2] +
                         t[0] * t[0] * (t[1] + t[2]) + t[1] * t[1] * (t[0] + t[2]) +
                         t[2] * t[2] * (t[0] + t[1]) + t[0] * t[1] * t[2];
-      third_moment[a] += areas[i] * h3 / 10.;
+      third_moment[a] += area * h3 / 10.;
     }
   }
   for(int a = 0; a < 2; ++a)
