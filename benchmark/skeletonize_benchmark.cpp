@@ -27,6 +27,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -34,7 +35,6 @@
 #include <fcntl.h>
 #include <malloc.h>
 #include <spawn.h>
-#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -64,8 +64,20 @@ struct Process_run
 {
   int exit_code = -1;
   double wall_ms = 0;
-  double peak_mib = 0; // the child's largest resident set
+  double peak_mib = 0; // the child's largest resident set, as it reports it in its JSON
 };
+
+// skeletonize's own report of its peak memory (`peak_memory_mib` of its JSON). The rusage
+// of a child is no measure here: Linux counts in it the memory of the parent it was
+// spawned from, and this parent has just run MCF.
+double reported_peak_mib(const std::string& json_path)
+{
+  std::ifstream in(json_path);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string key = "\"peak_memory_mib\":";
+  const std::size_t at = text.find(key);
+  return at == std::string::npos ? -1 : std::atof(text.c_str() + at + key.size());
+}
 
 // Runs `arguments` as a child process, standard output and error to /dev/null.
 Process_run run_process(const std::vector<std::string>& arguments)
@@ -84,20 +96,19 @@ Process_run run_process(const std::vector<std::string>& arguments)
   if(posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ) == 0)
   {
     int status = 0;
-    struct rusage usage;
-    if(wait4(pid, &status, 0, &usage) == pid)
+    if(waitpid(pid, &status, 0) == pid)
     {
       run.wall_ms = ms_since(start);
       run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-      run.peak_mib = double(usage.ru_maxrss) / 1024; // KiB on Linux
     }
   }
   posix_spawn_file_actions_destroy(&actions);
   return run;
 }
 
-// The median of `repeats` runs (the largest peak memory); a failed run ends the benchmark.
-Process_run time_process(const std::vector<std::string>& arguments, int repeats)
+// The median of `repeats` runs of skeletonize writing `json_path` (and the largest peak
+// memory); a failed run ends the benchmark.
+Process_run time_skeletonize(const std::vector<std::string>& arguments, const std::string& json_path, int repeats)
 {
   std::vector<double> times;
   Process_run result;
@@ -110,7 +121,7 @@ Process_run time_process(const std::vector<std::string>& arguments, int repeats)
       std::exit(1);
     }
     times.push_back(run.wall_ms);
-    result.peak_mib = std::max(result.peak_mib, run.peak_mib);
+    result.peak_mib = std::max(result.peak_mib, reported_peak_mib(json_path));
   }
   result.exit_code = 0;
   result.wall_ms = median(times);
@@ -197,7 +208,7 @@ int main(int argc, char* argv[])
       std::cerr << "skipping " << path << " (unreadable, open or not triangulated)\n";
       continue;
     }
-    const Process_run ours = time_process({skeletonize, path, "-o", out_json}, repeats);
+    const Process_run ours = time_skeletonize({skeletonize, path, "-o", out_json}, out_json, repeats);
     double mcf_ms = 0;
     if(run_mcf)
     {
@@ -234,7 +245,7 @@ int main(int argc, char* argv[])
       std::vector<double> reads;
       for(int r = 0; r < repeats; ++r)
         reads.push_back(read_bytes_ms(path));
-      const Process_run ours = time_process({skeletonize, path, "-o", out_json}, repeats);
+      const Process_run ours = time_skeletonize({skeletonize, path, "-o", out_json}, out_json, repeats);
       const double read_ms = median(reads);
       std::cout << "| armadillo_x2." << extension << " | " << double(fs::file_size(path)) / (1024 * 1024) << " | "
                 << read_ms << " | " << ours.wall_ms << " | " << ours.wall_ms / read_ms << " | " << ours.peak_mib

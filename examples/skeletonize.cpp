@@ -296,6 +296,17 @@ std::size_t count_connected_parts(const Mesh& mesh)
   return parts_count;
 }
 
+// The largest resident memory of this process so far, in MiB (Linux: VmHWM of
+// /proc/self/status), or a negative number where the system does not say.
+double peak_resident_mib()
+{
+  std::ifstream status("/proc/self/status");
+  for(std::string line; std::getline(status, line);)
+    if(line.compare(0, 6, "VmHWM:") == 0)
+      return std::stod(line.substr(6)) / 1024; // kB
+  return -1;
+}
+
 // What one mesh gave, for the summary line and the batch's report.
 struct Mesh_summary
 {
@@ -392,6 +403,8 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
                         {"reeb_intervals", o.reeb_intervals}, {"voxel_size", report.voxel_size}}},
         {"computed", computed},
         {"timings_ms", timings},
+        {"peak_memory_mib", o.batch.empty() && peak_resident_mib() >= 0 ? nlohmann::json(peak_resident_mib())
+                                                                         : nlohmann::json(nullptr)},
         {"stages", stages},
         {"skeleton", gs::IO::curve_skeleton_to_json(curve)},
         {"control", {{"joints", control_json["joints"]}, {"bones", control_json["bones"]},

@@ -152,9 +152,9 @@ BOOST_AUTO_TEST_CASE(obj_corners_with_texture_and_normal_indices_and_comments)
 
 BOOST_AUTO_TEST_CASE(unusual_forms_are_left_to_CGALs_readers)
 {
-  const std::string path = temporary_path("coloured.off");
-  // A face colour, and a negative OBJ index: both for CGAL's readers.
-  std::ofstream(path) << "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1 255 0 0\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
+  const std::string path = temporary_path("homogeneous.off");
+  // Homogeneous coordinates, and a negative OBJ index: both for CGAL's readers.
+  std::ofstream(path) << "4OFF\n4 4 0\n0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
   gio::internal::Indexed_soup soup;
   BOOST_TEST(!gio::internal::read_soup_fast(path, "off", soup));
   Mesh mesh;
@@ -165,6 +165,20 @@ BOOST_AUTO_TEST_CASE(unusual_forms_are_left_to_CGALs_readers)
   BOOST_TEST(!gio::internal::read_soup_fast(obj, "obj", soup));
   std::filesystem::remove(path);
   std::filesystem::remove(obj);
+}
+
+BOOST_AUTO_TEST_CASE(colours_are_skipped_as_CGAL_skips_them)
+{
+  const std::string path = temporary_path("coloured.off");
+  std::ofstream(path) << "COFF\n4 4 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n"
+                         "0 0 1 9 9 9 255\n3 0 2 1 255 0 0\n3 0 1 3 0 255 0\n3 1 2 3 0 0 255\n3 0 3 2 7 7 7\n";
+  gio::internal::Indexed_soup soup;
+  BOOST_TEST(gio::internal::read_soup_fast(path, "off", soup));
+  Mesh mesh;
+  gio::read_mesh(path, mesh);
+  BOOST_TEST(CGAL::is_closed(mesh));
+  check_identical(mesh, read_with_CGAL(path), path);
+  std::filesystem::remove(path);
 }
 
 BOOST_AUTO_TEST_CASE(the_manifold_test_agrees_with_CGALs_on_random_soups)

@@ -215,12 +215,16 @@ inline bool counts_fit(double items, std::size_t file_size)
   return items >= 0 && items <= double(1 << 28) && 2 * items <= double(file_size);
 }
 
-// "OFF", three counts, "x y z" lines, "n i_1 ... i_n" lines; comments anywhere.
+// "OFF", three counts, "x y z" lines, "n i_1 ... i_n" lines (a face colour after the
+// indices is skipped); comments anywhere. "COFF", "NOFF" and "CNOFF" too: their vertex
+// lines start with x y z, and their colours and normals are skipped.
 inline bool read_plain_OFF(const char* text, std::size_t size, Indexed_soup& soup)
 {
   Text_cursor in(text, text + size);
   in.skip_space();
-  if(in.word() != "OFF")
+  const std::string keyword = in.word();
+  const bool vertex_extras = keyword == "COFF" || keyword == "NOFF" || keyword == "CNOFF";
+  if(keyword != "OFF" && !vertex_extras)
     return false;
   in.skip_space();
   std::size_t vertices = 0, faces = 0, edges = 0;
@@ -232,7 +236,11 @@ inline bool read_plain_OFF(const char* text, std::size_t size, Indexed_soup& sou
   for(auto& p : soup.points)
   {
     in.skip_space();
-    if(!in.point(p) || !in.end_of_line())
+    if(!in.point(p))
+      return false;
+    if(vertex_extras)
+      in.skip_line();
+    else if(!in.end_of_line())
       return false;
   }
   soup.offsets.reserve(faces + 1);
@@ -250,8 +258,7 @@ inline bool read_plain_OFF(const char* text, std::size_t size, Indexed_soup& sou
         return false;
       soup.corners.push_back(i);
     }
-    if(!in.end_of_line()) // a colour: CGAL's reader knows them
-      return false;
+    in.skip_line(); // a colour, if any
     soup.close_polygon();
   }
   return faces > 0 && soup.has_only_finite_points();
