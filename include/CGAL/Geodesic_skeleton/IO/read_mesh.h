@@ -9,6 +9,7 @@
 /// a clean manifold, with a clear error for a file that holds no usable mesh.
 
 #include <CGAL/Geodesic_skeleton/IO/internal/mesh_file_checks.h>
+#include <CGAL/Geodesic_skeleton/IO/internal/soup_to_mesh.h>
 
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -92,10 +93,6 @@ void read_mesh(const std::string& path, PolygonMesh& mesh)
   using Point = typename boost::property_traits<
       typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>::value_type;
   auto fail = [&](const std::string& problem) { throw std::runtime_error(path + ": " + problem); };
-  auto finite = [](const Point& p) {
-    return std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y())) &&
-           std::isfinite(CGAL::to_double(p.z()));
-  };
   if(!std::ifstream(path))
     fail("cannot open the file");
   if(internal::binary_STL_has_non_finite_coordinate(path))
@@ -112,27 +109,7 @@ void read_mesh(const std::string& path, PolygonMesh& mesh)
   std::vector<std::vector<std::size_t>> polygons;
   if(!CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false)))
     fail("the file cannot be parsed as a mesh (OFF, OBJ, PLY, STL, ...)");
-  for(const Point& p : points)
-    if(!finite(p))
-      fail("a vertex has a non-finite coordinate (NaN or infinite)");
-  for(const auto& polygon : polygons)
-    for(std::size_t i : polygon)
-      if(i >= points.size())
-        fail("a face refers to vertex " + std::to_string(i) + ", but the file has only " +
-             std::to_string(points.size()) + " vertices");
-  if(polygons.empty())
-    fail("the mesh has no faces");
-  clear(mesh);
-  if(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
-  {
-    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-    return;
-  }
-  CGAL::Polygon_mesh_processing::repair_polygon_soup(points, polygons);
-  CGAL::Polygon_mesh_processing::orient_polygon_soup(points, polygons);
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-  if(num_faces(mesh) == 0)
-    fail("the mesh has no faces (every face is degenerate)");
+  internal::polygon_soup_to_checked_mesh(path, points, polygons, mesh);
 }
 
 } // namespace IO
