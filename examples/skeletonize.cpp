@@ -381,7 +381,8 @@ int run(const Options& o)
     throw Usage_error(o.input + ": " + e.what());
   }
   Skinning skinning{{}, {}, {}, mesh};
-  const bool skin = o.weights || to_gltf || o.svg_stage == "weights";
+  // A given skeleton is there to be skinned: its report always has the weights' summary.
+  const bool skin = given_skeleton || o.weights || to_gltf || o.svg_stage == "weights";
   if(skin)
     compute_skinning(o, control, skinning);
 

@@ -152,7 +152,7 @@ inline void normalise(Bone_weights& weights)
 /// `max_bones_per_vertex` largest weights are kept and scaled to sum 1.
 ///
 /// <b>Cost.</b> A bone's search stops expanding at a voxel where `d_b + 1/2 >= s (d1 + 1/2)
-/// + 2` (where its weight is zero, with a margin of two voxels for the reading at the
+/// + 1` (where its weight is zero, with a margin of a voxel for the reading at the
 /// vertices), so each voxel is visited by the few bones near it, not by every bone: the
 /// whole costs a few times one search through the solid. A voxel that the bone could only
 /// reach through such voxels (around a bend of the solid) gets no weight from it.
@@ -182,8 +182,9 @@ inline void normalise(Bone_weights& weights)
 ///   - `falloff` (package parameter, `double`): the exponent `p` above, in [0.5, 16]
 ///     (default 2: inverse square distance; larger gives sharper transitions at the joints).
 ///   - `influence_ratio` (package parameter, `double`): `s` above, in [1.05, 100] (default
-///     2.5: a bone influences vertices up to 2.5 times as far from it as from the nearest
-///     bone, so the blend around a joint of a limb of radius r spans about 2.3 r on each side).
+///     2: a bone influences vertices up to twice as far from it as from the nearest bone, so
+///     the blend around a joint of a limb of radius r spans about 1.7 r on each side; a
+///     larger ratio blends more widely and costs more: `Skinning_report::voxel_visits`).
 ///   - `bone_segmentation_map` (package parameter): a writable vertex property map of an
 ///     integer type; receives the bone of largest weight of each vertex (the hard
 ///     segmentation of the mesh by bone).
@@ -278,41 +279,50 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   }
   std::vector<internal::Voxel_distance> nearest(solid.size(), internal::unreached);
   std::vector<std::uint32_t> reached;
-  internal::voxel_dijkstra(solid, all_seeds, nearest, reached,
+  internal::Bucket_queue queue;
+  internal::voxel_dijkstra(solid, all_seeds, nearest, reached, queue,
                            [](std::uint32_t, internal::Voxel_distance) { return true; });
-  std::vector<float> nearest_at_vertex(n, internal::unreached);
+  std::vector<float> nearest_at_vertex(n, HUGE_VALF); // d1 at each vertex, in voxels
+  // The solid voxels at a corner of a cell with vertices: the only ones read at vertices.
+  std::vector<std::uint8_t> read_at_vertices(solid.size(), 0);
   for(std::size_t cell = 0; cell < solid.layout.volume(); ++cell)
     if(cells.has_vertices(cell))
+    {
       cells.read_cell(solid, cell, nearest, [&](std::uint32_t v, double d) { nearest_at_vertex[v] = float(d); });
+      for(std::ptrdiff_t offset : cells.corner_offsets)
+        if(const std::int32_t u = solid.solid_of_cell[std::size_t(std::ptrdiff_t(cell) + offset)]; u >= 0)
+          read_at_vertices[std::size_t(u)] = 1;
+    }
 
   // One bounded search per bone; each vertex keeps its k largest weights.
   std::vector<Bone_weights> weights(n);
   std::vector<internal::Voxel_distance> distance(solid.size(), internal::unreached);
-  // A bone's search stops at a voxel where d_b + 1/2 >= s (d1 + 1/2) + 2 (in voxels).
+  // A bone's search stops at a voxel where d_b + 1/2 >= s (d1 + 1/2) + 1 (in voxels).
   std::vector<internal::Voxel_distance> stop(solid.size());
   for(std::size_t u = 0; u < solid.size(); ++u)
     stop[u] = nearest[u] == internal::unreached
                   ? 0
-                  : internal::Voxel_distance(std::min(4e9, (s * (nearest[u] * internal::voxels_per_unit + 0.5) + 1.5) /
+                  : internal::Voxel_distance(std::min(4e9, (s * (nearest[u] * internal::voxels_per_unit + 0.5) + 0.5) /
                                                                internal::voxels_per_unit));
   std::vector<std::uint32_t> stamp(solid.layout.volume(), 0), touched_cells;
   for(std::size_t b = 0; b < bones; ++b)
   {
     reached.clear();
-    internal::voxel_dijkstra(solid, seeds[b], distance, reached,
+    internal::voxel_dijkstra(solid, seeds[b], distance, reached, queue,
                              [&](std::uint32_t u, internal::Voxel_distance d) { return d < stop[u]; });
     report.voxel_visits += reached.size();
     touched_cells.clear();
     for(std::uint32_t u : reached)
-      for(std::ptrdiff_t offset : cells.corner_offsets)
-      {
-        const std::size_t cell = std::size_t(std::ptrdiff_t(solid.cell_of_solid[u]) - offset);
-        if(stamp[cell] != b + 1 && cells.has_vertices(cell))
+      if(read_at_vertices[u])
+        for(std::ptrdiff_t offset : cells.corner_offsets)
         {
-          stamp[cell] = std::uint32_t(b + 1);
-          touched_cells.push_back(std::uint32_t(cell));
+          const std::size_t cell = std::size_t(std::ptrdiff_t(solid.cell_of_solid[u]) - offset);
+          if(stamp[cell] != b + 1 && cells.has_vertices(cell))
+          {
+            stamp[cell] = std::uint32_t(b + 1);
+            touched_cells.push_back(std::uint32_t(cell));
+          }
         }
-      }
     for(std::uint32_t cell : touched_cells)
       cells.read_cell(solid, cell, distance, [&](std::uint32_t v, double d) {
         const double w = std::pow(d + 0.5, -p) - std::pow(s * (double(nearest_at_vertex[v]) + 0.5), -p);

@@ -89,7 +89,7 @@ inline constexpr Parameter_range max_bones_per_vertex{"max_bones_per_vertex", 1,
 inline constexpr Parameter_range falloff{"falloff", 0.5, 16, 2, false, false};
 /// `compute_skinning_weights()`: a bone influences a vertex only when its geodesic distance is
 /// less than this many times the nearest bone's.
-inline constexpr Parameter_range influence_ratio{"influence_ratio", 1.05, 100, 2.5, false, false};
+inline constexpr Parameter_range influence_ratio{"influence_ratio", 1.05, 100, 2, false, false};
 
 } // namespace parameter_ranges
 

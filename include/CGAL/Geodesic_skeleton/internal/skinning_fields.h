@@ -66,18 +66,28 @@ struct Solid_voxels
   }
 };
 
+// The buckets of voxel_dijkstra(), kept from one search to the next: bucket d % ring holds
+// the voxels inserted at distance d; every step is shorter than the ring, so the buckets
+// ahead never wrap onto the current one.
+struct Bucket_queue
+{
+  static constexpr std::size_t ring = longest_step + 1;
+  std::array<std::vector<std::uint32_t>, ring> buckets;
+  std::vector<std::uint32_t> current;
+};
+
 // Multi-source Dijkstra from `seeds` (distance 0) through the solid voxels, with a bucket
-// queue. `distance` has one entry per solid voxel, all `unreached` on entry: the voxels this
+// queue (empty on entry and on return). `distance` has one entry per solid voxel, all `unreached` on entry: the voxels this
 // call reaches are appended to `reached` (the caller resets them). A settled voxel u of
 // distance d is expanded only when `expand(u, d)` holds.
 template <typename Expand>
 void voxel_dijkstra(const Solid_voxels& solid, const std::vector<std::uint32_t>& seeds,
-                    std::vector<Voxel_distance>& distance, std::vector<std::uint32_t>& reached, Expand expand)
+                    std::vector<Voxel_distance>& distance, std::vector<std::uint32_t>& reached,
+                    Bucket_queue& queue, Expand expand)
 {
-  // Bucket d % (longest_step + 1) holds the voxels inserted at distance d: every step is
-  // shorter than the ring, so the buckets ahead never wrap onto the current one.
-  constexpr std::size_t ring = longest_step + 1;
-  std::array<std::vector<std::uint32_t>, ring> buckets;
+  constexpr std::size_t ring = Bucket_queue::ring;
+  auto& buckets = queue.buckets;
+  std::vector<std::uint32_t>& current = queue.current;
   std::size_t pending = 0;
   for(std::uint32_t s : seeds)
     if(distance[s] != 0)
@@ -88,7 +98,6 @@ void voxel_dijkstra(const Solid_voxels& solid, const std::vector<std::uint32_t>&
       buckets[0].push_back(s);
       ++pending;
     }
-  std::vector<std::uint32_t> current;
   for(Voxel_distance d = 0; pending > 0; ++d)
   {
     std::vector<std::uint32_t>& bucket = buckets[d % ring];
