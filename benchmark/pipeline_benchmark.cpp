@@ -24,6 +24,8 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/extract_mean_curvature_flow_skeleton.h>
 
+#include "benchmark_common.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -42,17 +44,13 @@ using Mesh = CGAL::Surface_mesh<Point>;
 using Mcf = CGAL::Mean_curvature_flow_skeletonization<Mesh>;
 using Segment = std::pair<Point, Point>;
 
+using benchmark_common::median;
+
 namespace {
 
 double now_ms()
 {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-double median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
 }
 
 double segment_distance(const Point& p, const Segment& s)
@@ -99,30 +97,14 @@ struct Our_run
 
 int main(int argc, char* argv[])
 {
-  std::string data_dir = GEODESIC_SKELETON_DATA_DIR;
-  int repeats = 5, resolution = gs::default_voxel_resolution;
-  bool run_mcf = true;
-  std::vector<std::string> names = {"elephant", "cow", "triceratops", "dino", "homer", "bull", "camel",
-                                    "bear", "man", "armadillo", "hand"};
-  for(int i = 1; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    if(arg == "--repeats" && i + 1 < argc)
-      repeats = std::max(1, std::atoi(argv[++i]));
-    else if(arg == "--meshes" && i + 1 < argc)
-      names = split_commas(argv[++i]);
-    else if(arg == "--resolution" && i + 1 < argc)
-      resolution = std::atoi(argv[++i]);
-    else if(arg == "--no-mcf")
-      run_mcf = false;
-    else if(!arg.empty() && arg[0] != '-')
-      data_dir = arg;
-    else
-    {
-      std::cout << "usage: " << argv[0] << " [DATA_DIR] [--repeats N] [--meshes a,b] [--resolution R] [--no-mcf]\n";
-      return 2;
-    }
-  }
+  benchmark_common::Options options =
+      benchmark_common::default_options(GEODESIC_SKELETON_DATA_DIR, gs::default_voxel_resolution);
+  if(!benchmark_common::parse_options(argc, argv, "--no-mcf", options))
+    return 2;
+  const std::string& data_dir = options.data_dir;
+  const int repeats = options.repeats, resolution = options.resolution;
+  const bool run_mcf = !options.flag;
+  const std::vector<std::string>& names = options.names;
 
   std::cout << std::fixed << std::setprecision(2);
   std::cout << "| mesh | vertices | ours ms | MCF ms | MCF/ours | our bones | MCF vertices | MCF ends | MCF junctions"

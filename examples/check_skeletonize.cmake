@@ -1,16 +1,7 @@
 # cmake -DPROGRAM=<skeletonize> -DMESH=<mesh> -DWORK_DIR=<dir> -P check_skeletonize.cmake
 # Runs skeletonize on MESH with every output format and checks the JSON contract's keys,
 # the counts' consistency, and that the other files and the SVG preview are written.
-file(REMOVE_RECURSE ${WORK_DIR})
-file(MAKE_DIRECTORY ${WORK_DIR})
-
-function(run)
-  execute_process(COMMAND ${PROGRAM} ${ARGN} RESULT_VARIABLE result ERROR_VARIABLE err OUTPUT_VARIABLE out)
-  if(NOT result EQUAL 0)
-    message(FATAL_ERROR "skeletonize ${ARGN} failed (${result}):\n${err}")
-  endif()
-  set(stdout "${out}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/skeletonize_runs.cmake)
 
 run(${MESH} -o ${WORK_DIR}/out.json --svg ${WORK_DIR}/out.svg)
 file(READ ${WORK_DIR}/out.json json)

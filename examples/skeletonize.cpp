@@ -5,9 +5,14 @@
 //   skeletonize --batch DIR_OR_LIST -o OUT_DIR [--threads N] [stage options]
 //
 // The format of OUT follows its extension: .json (the documented contract, also written to
-// standard output when there is no -o), .obj, .bvh, .polylines.txt. See --help.
+// standard output when there is no -o), .obj, .bvh, .polylines.txt, and .glb or .gltf (the
+// mesh skinned to its skeleton). See --help.
 
 #include <CGAL/Geodesic_skeleton.h>
+#include <CGAL/Geodesic_skeleton/IO/gltf.h>
+#include <CGAL/Geodesic_skeleton/IO/read_control_skeleton_json.h>
+#include <CGAL/Geodesic_skeleton/IO/read_mesh_with_assimp.h>
+#include <CGAL/Geodesic_skeleton/compute_skinning_weights.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -73,6 +78,12 @@ struct Options
   std::size_t reeb_intervals = static_cast<std::size_t>(ranges::number_of_reeb_intervals.default_value);
   bool fill_holes = true;
   bool keep_surface_voxels = true;
+  // Skinning: a given skeleton instead of the extracted one, the weights in the report.
+  std::string skeleton;
+  bool weights = false;
+  int max_bones_per_vertex = static_cast<int>(ranges::max_bones_per_vertex.default_value);
+  double falloff = ranges::falloff.default_value;
+  double influence_ratio = ranges::influence_ratio.default_value;
 };
 
 // The numeric options: option, library range, the words of --help.
@@ -93,6 +104,10 @@ const Numeric_option numeric_options[] = {
     {"--straightness", "S", ranges::straightness_tolerance, "allowed bone deviation in MAT radii"},
     {"--min-bone-length", "F", ranges::minimum_bone_length_factor, "shortest bone in MAT radii"},
     {"--reeb-intervals", "N", ranges::number_of_reeb_intervals, "intervals of the Reeb graph reported for comparison"},
+    {"--max-bones", "K", ranges::max_bones_per_vertex, "skinning: bones that may influence one vertex"},
+    {"--falloff", "P", ranges::falloff, "skinning: exponent of the inverse-distance weights"},
+    {"--influence-ratio", "S", ranges::influence_ratio,
+     "skinning: a bone pulls a vertex up to S times the nearest bone's distance"},
 };
 
 const Numeric_option& numeric_option(const std::string& option)
@@ -107,20 +122,27 @@ const char* const usage_head = R"(usage: skeletonize INPUT_MESH [-o OUT] [--reso
        skeletonize --batch DIR_OR_LIST -o OUT_DIR [--threads N] [options]
 
 Extracts the animation control skeleton of a triangle mesh (any format that CGAL reads:
-OFF, OBJ, PLY, STL, ...). Without -o, writes the JSON report to standard output.
+OFF, OBJ, PLY, STL, ...; FBX, glTF/GLB and DAE through Assimp). Without -o, writes the JSON
+report to standard output.
 
   -o, --output OUT           write the result to OUT; its extension picks the format:
                              .json (report and skeletons), .obj (joints and bone lines),
-                             .bvh (hierarchy with a rest pose), .polylines.txt (bone polylines)
+                             .bvh (hierarchy with a rest pose), .polylines.txt (bone polylines),
+                             .glb or .gltf (the mesh skinned to the skeleton, glTF 2.0)
+  --skeleton RIG.json        skin the mesh to this control skeleton (skeletonize's JSON
+                             report or its "control" object) instead of extracting one
+  --weights                  add the skinning weights to the JSON report
   --svg PREVIEW.svg          also draw the mesh and its control skeleton in three views
   --svg-stage STAGE          what the picture shows: control (default), pruned (the smoothed
-                             curve skeleton), thinned (the curve skeleton after thinning), reeb
+                             curve skeleton), thinned (the curve skeleton after thinning), reeb,
+                             weights (the mesh coloured by the bone of largest weight)
   --reeb                     also compute the Reeb graph of the geodesic distance (the
                              paper's baseline) and report it in the JSON (stages.reeb)
-  --batch DIR_OR_LIST        skeletonize every mesh of a folder (.off, .obj, .ply, .stl), or
-                             every path listed in a text file (one per line), writing
-                             OUT_DIR/NAME.json for each, on all cores; one JSON summary line
-                             per mesh on standard output, a progress bar on a terminal
+  --batch DIR_OR_LIST        skeletonize every mesh of a folder (.off, .obj, .ply, .stl, .fbx,
+                             .gltf, .glb, .dae), or every path listed in a text file (one
+                             per line), writing OUT_DIR/NAME.json for each, on all cores; one
+                             JSON summary line per mesh on standard output, a progress bar
+                             on a terminal
   --threads N                batch mode: meshes skeletonized at once (default: the cores)
   --no-fill-holes            do not close the mesh's holes before voxelizing
   --peel-surface-voxels      drop the surface voxels whose centre is outside the mesh (opens
@@ -202,6 +224,11 @@ Options parse_options(int argc, char** argv)
     else if(a == "--straightness") o.straightness_tolerance = parse_number<double>(a, value());
     else if(a == "--min-bone-length") o.minimum_bone_length_factor = parse_number<double>(a, value());
     else if(a == "--reeb-intervals") o.reeb_intervals = parse_number<std::size_t>(a, value());
+    else if(a == "--skeleton") o.skeleton = value();
+    else if(a == "--weights") o.weights = true;
+    else if(a == "--max-bones") o.max_bones_per_vertex = parse_number<int>(a, value());
+    else if(a == "--falloff") o.falloff = parse_number<double>(a, value());
+    else if(a == "--influence-ratio") o.influence_ratio = parse_number<double>(a, value());
     else if(!a.empty() && a[0] == '-')
       throw Usage_error("unknown option " + a + " (see --help)");
     else if(o.input.empty()) o.input = a;
@@ -216,6 +243,8 @@ Options parse_options(int argc, char** argv)
       throw Usage_error("--batch needs an output folder: -o OUT_DIR");
     if(!o.svg.empty())
       throw Usage_error("--svg draws one mesh; it cannot be used with --batch");
+    if(!o.skeleton.empty())
+      throw Usage_error("--skeleton is the rig of one mesh; it cannot be used with --batch");
   }
   else if(o.input.empty())
     throw Usage_error("no input mesh (see --help)");
@@ -229,14 +258,84 @@ bool ends_with(const std::string& s, const std::string& suffix)
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-// Reads any mesh CGAL reads (a file that is not a clean manifold is repaired); the
-// library's reader names the file and the problem.
+// The formats read through Assimp rather than CGAL.
+bool is_scene_file(const std::string& path)
+{
+  const std::string extension = gs::IO::internal::file_extension(path);
+  return extension == "fbx" || extension == "gltf" || extension == "glb" || extension == "dae";
+}
+
+bool is_gltf_output(const std::string& path) { return ends_with(path, ".glb") || ends_with(path, ".gltf"); }
+
+// The skinning weights of the mesh for the control skeleton, and what they cost.
+struct Skinning
+{
+  std::vector<gs::Bone_weights> weights;
+  std::vector<int> segment; // the bone of largest weight of each vertex
+  gs::Skinning_report report;
+  auto weight_map() const { return boost::make_iterator_property_map(weights.begin(), get(CGAL::vertex_index, mesh)); }
+  const Mesh& mesh;
+};
+
+void compute_skinning(const Options& o, const std::string& input, const gs::Control_skeleton<Point>& control,
+                      Skinning& skinning)
+{
+  const Mesh& mesh = skinning.mesh;
+  skinning.weights.assign(num_vertices(mesh), gs::Bone_weights());
+  skinning.segment.assign(num_vertices(mesh), -1);
+  try
+  {
+    skinning.report = gs::compute_skinning_weights(
+        mesh, control,
+        boost::make_iterator_property_map(skinning.weights.begin(), get(CGAL::vertex_index, mesh)),
+        params::combine(params::resolution(o.resolution), params::fill_holes(o.fill_holes),
+                        params::max_bones_per_vertex(o.max_bones_per_vertex), params::falloff(o.falloff),
+                        params::influence_ratio(o.influence_ratio),
+                        params::bone_segmentation_map(
+                            boost::make_iterator_property_map(skinning.segment.begin(), get(CGAL::vertex_index, mesh)))));
+  }
+  catch(const std::exception& e)
+  {
+    throw Usage_error(input + ": " + e.what());
+  }
+}
+
+// The report's "skinning" and "weights": the settings and costs, and the non-zero weights
+// as three parallel arrays (vertex, bone, weight), vertex by vertex, largest weight first.
+void add_skinning_json(const Options& o, const Skinning& skinning, nlohmann::json& json)
+{
+  const gs::Skinning_report& r = skinning.report;
+  json["skinning"] = {{"max_bones_per_vertex", o.max_bones_per_vertex}, {"falloff", o.falloff},
+                      {"influence_ratio", o.influence_ratio}, {"resolution", o.resolution},
+                      {"voxel_size", r.voxel_size}, {"solid_voxels", r.solid_voxels},
+                      {"voxel_visits", r.voxel_visits},
+                      {"vertices_bound_in_straight_line", r.vertices_bound_in_straight_line},
+                      {"milliseconds", r.milliseconds}};
+  if(!o.weights)
+    return;
+  std::vector<std::size_t> vertex, bone;
+  std::vector<float> weight;
+  for(std::size_t v = 0; v < skinning.weights.size(); ++v)
+    for(std::size_t i = 0; i < skinning.weights[v].size(); ++i)
+    {
+      vertex.push_back(v);
+      bone.push_back(skinning.weights[v].bone[i]);
+      weight.push_back(skinning.weights[v].weight[i]);
+    }
+  json["weights"] = {{"vertex", vertex}, {"bone", bone}, {"weight", weight}};
+}
+
+// Reads any mesh CGAL reads, and FBX, glTF/GLB and DAE files through Assimp (a file that is
+// not a clean manifold is repaired); the library's readers name the file and the problem.
 Mesh read_mesh(const std::string& path)
 {
   Mesh mesh;
   try
   {
-    gs::IO::read_mesh(path, mesh);
+    if(is_scene_file(path))
+      gs::IO::read_mesh_with_assimp(path, mesh);
+    else
+      gs::IO::read_mesh(path, mesh);
   }
   catch(const std::runtime_error& e)
   {
@@ -296,6 +395,12 @@ std::size_t count_connected_parts(const Mesh& mesh)
   return parts_count;
 }
 
+nlohmann::json mesh_json(const Mesh& mesh)
+{
+  return {{"vertices", num_vertices(mesh)}, {"faces", num_faces(mesh)}, {"closed", CGAL::is_closed(mesh)},
+          {"components", count_connected_parts(mesh)}};
+}
+
 // The largest resident memory of this process so far, in MiB (Linux: VmHWM of
 // /proc/self/status), or a negative number where the system does not say.
 double peak_resident_mib()
@@ -322,8 +427,8 @@ double milliseconds_since(std::chrono::steady_clock::time_point start)
 void check_output_format(const std::string& output)
 {
   if(!output.empty() && !ends_with(output, ".json") && !ends_with(output, ".obj") && !ends_with(output, ".bvh") &&
-     !ends_with(output, ".polylines.txt"))
-    throw Usage_error(output + ": unknown output format (use .json, .obj, .bvh or .polylines.txt)");
+     !ends_with(output, ".polylines.txt") && !is_gltf_output(output))
+    throw Usage_error(output + ": unknown output format (use .json, .obj, .bvh, .polylines.txt, .glb or .gltf)");
 }
 
 // Skeletonizes `input` and writes `output` (standard output when empty) as `o` says.
@@ -331,6 +436,8 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
 {
   const auto start = std::chrono::steady_clock::now();
   const bool to_json = output.empty() || ends_with(output, ".json");
+  const bool to_gltf = is_gltf_output(output);
+  const bool given_skeleton = !o.skeleton.empty();
   const Mesh mesh = read_mesh(input);
   Mesh_summary summary;
   summary.read_ms = milliseconds_since(start);
@@ -341,7 +448,18 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
   // The thinned graph and the Reeb graph cost as much as the chain on large meshes: each is
   // computed only when asked for (the picture of the thinned skeleton, --reeb).
   const bool thinned_graph = o.svg_stage == "thinned" && !o.svg.empty();
-  try
+  if(given_skeleton)
+  {
+    try
+    {
+      gs::IO::read_control_skeleton_json(o.skeleton, control);
+    }
+    catch(const std::runtime_error& e) // "RIG.json: problem"
+    {
+      throw Usage_error(e.what());
+    }
+  }
+  else try
   {
     const auto np = params::combine(
         params::resolution(o.resolution), params::fill_holes(o.fill_holes),
@@ -365,14 +483,31 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
   {
     throw Usage_error(input + ": " + e.what());
   }
+  Skinning skinning{{}, {}, {}, mesh};
+  // A given skeleton is there to be skinned: its report always has the weights' summary.
+  const bool skin = given_skeleton || o.weights || to_gltf || o.svg_stage == "weights";
+  if(skin)
+    compute_skinning(o, input, control, skinning);
 
   std::string text;
-  if(to_json)
+  if(to_json && given_skeleton)
   {
-    const std::size_t components = count_connected_parts(mesh);
+    nlohmann::json json = {{"input", input},
+                           {"skeleton_input", o.skeleton},
+                           {"mesh", mesh_json(mesh)},
+                           {"timings_ms", {{"skinning_weights", skinning.report.milliseconds}}},
+                           {"control", gs::IO::control_skeleton_to_json(control)}};
+    if(skin)
+      add_skinning_json(o, skinning, json);
+    text = json.dump(1) + "\n";
+  }
+  else if(to_json)
+  {
     nlohmann::json timings{{"total", report.total_ms}, {"read", summary.read_ms}};
     for(const auto& [stage, ms] : report.timings_ms)
       timings[stage] = ms;
+    if(skin)
+      timings["skinning_weights"] = skinning.report.milliseconds;
     nlohmann::json stages = {
         {"solid", {{"voxels", report.solid_voxels}, {"pieces", report.small_pieces.pieces},
                    {"small_pieces_removed", report.small_pieces.removed_pieces}}},
@@ -387,11 +522,12 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
     }
     if(thinned_graph)
       computed.push_back("thinned_graph");
+    if(skin)
+      computed.push_back("skinning_weights");
     const nlohmann::json control_json = gs::IO::control_skeleton_to_json(control);
-    const nlohmann::json json = {
+    nlohmann::json json = {
         {"input", input},
-        {"mesh", {{"vertices", num_vertices(mesh)}, {"faces", num_faces(mesh)},
-                  {"closed", CGAL::is_closed(mesh)}, {"components", components}}},
+        {"mesh", mesh_json(mesh)},
         {"parameters", {{"resolution", o.resolution}, {"fill_holes", o.fill_holes},
                         {"keep_surface_voxels", o.keep_surface_voxels},
                         {"small_piece_fraction", o.small_piece_fraction},
@@ -409,7 +545,22 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
         {"skeleton", gs::IO::curve_skeleton_to_json(curve)},
         {"control", {{"joints", control_json["joints"]}, {"bones", control_json["bones"]},
                      {"cut_bones", control_json["cut_bones"]}, {"roots", control_json["roots"]}}}};
+    if(skin)
+      add_skinning_json(o, skinning, json);
     text = json.dump(1) + "\n";
+  }
+  else if(to_gltf)
+  {
+    std::ostringstream out(std::ios::binary);
+    try
+    {
+      gs::IO::write_glTF(out, mesh, control, skinning.weight_map(), ends_with(output, ".glb"));
+    }
+    catch(const std::exception& e)
+    {
+      throw Usage_error(output + ": " + e.what());
+    }
+    text = out.str();
   }
   else
   {
@@ -427,7 +578,11 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
   {
     std::ostringstream picture;
     const std::string name = input.substr(input.find_last_of('/') + 1);
-    if(o.svg_stage == "control")
+    if(o.svg_stage == "weights")
+      gs::IO::write_svg_preview_of_labels(picture, mesh, skinning.segment, control, 360,
+                                          name + ": skinning, the bone of largest weight, " +
+                                              std::to_string(control.bones.size()) + " bones");
+    else if(o.svg_stage == "control")
       gs::IO::write_svg_preview(picture, mesh, control, 360,
                                 name + ": control skeleton, " + std::to_string(control.bones.size()) + " bones");
     else if(o.svg_stage == "pruned")
@@ -454,7 +609,13 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
   summary.joints = control.joints.size();
   summary.bones = control.bones.size();
   summary.chain_ms = report.total_ms;
-  if(o.batch.empty())
+  if(!o.batch.empty())
+    return summary;
+  if(given_skeleton)
+    std::cerr << "skeletonize: " << input << ": " << num_vertices(mesh) << " vertices, skinned to "
+              << o.skeleton << " (" << control.joints.size() << " joints, " << control.bones.size() << " bones) in "
+              << skinning.report.milliseconds << " ms\n";
+  else
     std::cerr << "skeletonize: " << input << ": " << num_vertices(mesh) << " vertices, " << report.solid_voxels
               << " solid voxels, " << report.thinned.points << " thinned points, " << report.pruned.points
               << " pruned points, " << control.joints.size() << " joints, " << control.bones.size() << " bones, "
@@ -468,8 +629,11 @@ int run(const Options& o)
   check_output_format(o.output);
   if(!o.svg.empty() && !ends_with(o.svg, ".svg"))
     throw Usage_error(o.svg + ": the preview must be an .svg file");
-  if(o.svg_stage != "control" && o.svg_stage != "pruned" && o.svg_stage != "thinned" && o.svg_stage != "reeb")
-    throw Usage_error("--svg-stage must be control, pruned, thinned or reeb, got '" + o.svg_stage + "'");
+  if(o.svg_stage != "control" && o.svg_stage != "pruned" && o.svg_stage != "thinned" && o.svg_stage != "reeb" &&
+     o.svg_stage != "weights")
+    throw Usage_error("--svg-stage must be control, pruned, thinned, reeb or weights, got '" + o.svg_stage + "'");
+  if(!o.skeleton.empty() && o.svg_stage != "control" && o.svg_stage != "weights")
+    throw Usage_error("--svg-stage " + o.svg_stage + " shows a stage of the extraction, which --skeleton skips");
   skeletonize(o, o.input, o.output);
   return 0;
 }
@@ -481,7 +645,10 @@ bool is_mesh_file(const std::filesystem::path& path)
   std::string extension = path.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
-  return extension == ".off" || extension == ".obj" || extension == ".ply" || extension == ".stl";
+  for(const char* mesh_extension : {".off", ".obj", ".ply", ".stl", ".fbx", ".gltf", ".glb", ".dae"})
+    if(extension == mesh_extension)
+      return true;
+  return false;
 }
 
 // The meshes of a batch: the mesh files of a folder, by name, or the lines of a list file
@@ -518,7 +685,7 @@ std::vector<std::string> batch_inputs(const std::string& batch)
     }
   }
   if(inputs.empty())
-    throw Usage_error(batch + ": no meshes to skeletonize (.off, .obj, .ply, .stl)");
+    throw Usage_error(batch + ": no meshes to skeletonize (.off, .obj, .ply, .stl, .fbx, .gltf, .glb, .dae)");
   return inputs;
 }
 

@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(g++ cmake make libcgal-dev libcgal-demo libboost-graph-dev libboost-test-dev
-          libeigen3-dev nlohmann-json3-dev doxygen)
+          libeigen3-dev nlohmann-json3-dev doxygen libassimp-dev libtinygltf-dev)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -14,6 +14,8 @@ meshes="$build/data/meshes"
 for stage in thinned pruned reeb control; do
   "$build/examples/skeletonize" "$meshes/cow.off" -o "$tmp/out.json" --svg "doc/figures/cow_$stage.svg" --svg-stage "$stage"
 done
+# The cow cut by the bone of largest weight (the skinning's hard segmentation).
+"$build/examples/skeletonize" "$meshes/cow.off" -o "$tmp/out.json" --svg doc/figures/cow_weights.svg --svg-stage weights
 for mesh in dino homer elephant; do
   "$build/examples/skeletonize" "$meshes/$mesh.off" -o "$tmp/out.json" --svg "doc/figures/$mesh.svg"
 done

@@ -38,10 +38,7 @@ Mesh read_with_CGAL(const std::string& path)
   std::vector<std::vector<std::size_t>> polygons;
   gio::internal::read_soup_with_CGAL(path, points, polygons);
   Mesh mesh;
-  if(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
-    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-  else
-    gio::internal::repair_soup_into_mesh(path, points, polygons, mesh);
+  gio::internal::polygon_soup_to_checked_mesh(path, points, polygons, mesh);
   return mesh;
 }
 

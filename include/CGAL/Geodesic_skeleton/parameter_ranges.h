@@ -83,6 +83,13 @@ inline constexpr Parameter_range number_of_reeb_intervals{"number_of_reeb_interv
 /// `integral_geodesic_mapping_function()`: base vertices of the integral.
 inline constexpr Parameter_range number_of_base_vertices{"number_of_base_vertices", 1, 100000, 50, true,
                                                          false};
+/// `compute_skinning_weights()`: bones that may influence one vertex (glTF reads 4 per set).
+inline constexpr Parameter_range max_bones_per_vertex{"max_bones_per_vertex", 1, 8, 4, true, false};
+/// `compute_skinning_weights()`: the exponent of the inverse-distance weights.
+inline constexpr Parameter_range falloff{"falloff", 0.5, 16, 2, false, false};
+/// `compute_skinning_weights()`: a bone influences a vertex only when its geodesic distance is
+/// less than this many times the nearest bone's.
+inline constexpr Parameter_range influence_ratio{"influence_ratio", 1.05, 100, 2, false, false};
 
 } // namespace parameter_ranges
 

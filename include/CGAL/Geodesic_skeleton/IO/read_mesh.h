@@ -11,11 +11,9 @@
 #include <CGAL/Geodesic_skeleton/IO/internal/fast_soup_readers.h>
 #include <CGAL/Geodesic_skeleton/IO/internal/indexed_soup.h>
 #include <CGAL/Geodesic_skeleton/IO/internal/mesh_file_checks.h>
+#include <CGAL/Geodesic_skeleton/IO/internal/soup_to_mesh.h>
 
 #include <CGAL/IO/polygon_soup_io.h>
-#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/number_utils.h>
 
@@ -69,21 +67,14 @@ inline bool binary_STL_has_non_finite_coordinate(const std::string& path)
   return false;
 }
 
-} // namespace internal
-
-namespace internal {
-
-// Reads `path` with CGAL's readers, after the checks of mesh_file_checks.h, into a soup
-// whose coordinates are finite and whose indices exist; throws "PATH: problem" otherwise.
+// Reads `path` with CGAL's readers, after the checks of mesh_file_checks.h that keep CGAL's
+// readers from files they mishandle; throws "PATH: problem" when the file does not parse.
+// The soup's coordinates and indices are checked after, by polygon_soup_to_checked_mesh().
 template <typename Point>
 void read_soup_with_CGAL(const std::string& path, std::vector<Point>& points,
                          std::vector<std::vector<std::size_t>>& polygons)
 {
   auto fail = [&](const std::string& problem) { throw std::runtime_error(path + ": " + problem); };
-  auto finite = [](const Point& p) {
-    return std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y())) &&
-           std::isfinite(CGAL::to_double(p.z()));
-  };
   if(binary_STL_has_non_finite_coordinate(path))
     fail("a vertex has a non-finite coordinate (NaN or infinite)");
   if(file_extension(path) == "ply")
@@ -96,31 +87,6 @@ void read_soup_with_CGAL(const std::string& path, std::vector<Point>& points,
   // anything from them (a face index past the vertices would be read out of bounds).
   if(!CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false)))
     fail("the file cannot be parsed as a mesh (OFF, OBJ, PLY, STL, ...)");
-  for(const Point& p : points)
-    if(!finite(p))
-      fail("a vertex has a non-finite coordinate (NaN or infinite)");
-  for(const auto& polygon : polygons)
-    for(std::size_t i : polygon)
-      if(i >= points.size())
-        fail("a face refers to vertex " + std::to_string(i) + ", but the file has only " +
-             std::to_string(points.size()) + " vertices");
-  if(polygons.empty())
-    fail("the mesh has no faces");
-}
-
-// Turns a soup that is not an oriented manifold mesh into one: duplicated and degenerate
-// polygons go, non-manifold vertices and edges are split, the orientation is made
-// consistent where it can be.
-template <typename Point, typename PolygonMesh>
-void repair_soup_into_mesh(const std::string& path, std::vector<Point>& points,
-                           std::vector<std::vector<std::size_t>>& polygons, PolygonMesh& mesh)
-{
-  clear(mesh);
-  CGAL::Polygon_mesh_processing::repair_polygon_soup(points, polygons);
-  CGAL::Polygon_mesh_processing::orient_polygon_soup(points, polygons);
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-  if(num_faces(mesh) == 0)
-    throw std::runtime_error(path + ": the mesh has no faces (every face is degenerate)");
 }
 
 } // namespace internal
@@ -179,13 +145,7 @@ void read_mesh(const std::string& path, PolygonMesh& mesh)
   }
   else
     internal::read_soup_with_CGAL(path, points, polygons);
-  if(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
-  {
-    clear(mesh);
-    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-    return;
-  }
-  internal::repair_soup_into_mesh(path, points, polygons, mesh);
+  internal::polygon_soup_to_checked_mesh(path, points, polygons, mesh);
 }
 
 } // namespace IO

@@ -11,6 +11,8 @@
 #include <CGAL/Geodesic_skeleton/internal/principal_frame.h>
 #include <CGAL/Geodesic_skeleton/voxelize.h>
 
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/number_utils.h>
 
@@ -53,14 +55,36 @@ inline std::string joint_colour(Joint_kind kind)
   return "#000000";
 }
 
-// What is drawn over the mesh: polylines (dashed or not) and dots.
+// What is drawn over the mesh: polylines (dashed or not) and dots; and, when not empty, a
+// label per triangle of mesh_triangles() that colours it (grey when negative).
 struct Svg_overlay
 {
   struct Line { std::vector<Vec3> points; bool dashed = false; };
   struct Dot { Vec3 point; double radius = 0; std::string colour; };
   std::vector<Line> lines;
   std::vector<Dot> dots;
+  std::vector<int> triangle_labels;
 };
+
+// The fill of a triangle: grey, or the colour of its label (12 colours in turn), lighter
+// the more it faces the viewer (`grey` in 0..15).
+inline std::string triangle_fill(int label, int grey)
+{
+  static const int palette[12][3] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44}, {214, 39, 40},
+                                     {148, 103, 189}, {140, 86, 75}, {227, 119, 194}, {188, 189, 34},
+                                     {23, 190, 207}, {174, 199, 232}, {255, 187, 120}, {152, 223, 138}};
+  std::ostringstream fill;
+  if(label < 0)
+  {
+    const int level = 120 + 8 * grey;
+    fill << "rgb(" << level << ',' << level << ',' << level + 6 << ')';
+    return fill.str();
+  }
+  const double shade = 0.5 + 0.5 * grey / 15.0;
+  const int* c = palette[label % 12];
+  fill << "rgb(" << int(c[0] * shade) << ',' << int(c[1] * shade) << ',' << int(c[2] * shade) << ')';
+  return fill.str();
+}
 
 template <typename Point>
 Vec3 to_vec3(const Point& p)
@@ -71,6 +95,28 @@ Vec3 to_vec3(const Point& p)
 template <typename FaceGraph>
 std::ostream& write_svg_views(std::ostream& os, const FaceGraph& mesh, const Svg_overlay& overlay,
                               int view_size, const std::string& title);
+
+// The bones (the polylines of their points, or their joints' segment when they have fewer
+// than two; cut bones dashed) and the joints (dots coloured by kind) of a control skeleton.
+template <typename Point>
+Svg_overlay control_skeleton_overlay(const Control_skeleton<Point>& skeleton)
+{
+  Svg_overlay overlay;
+  for(const auto* bones : {&skeleton.bones, &skeleton.cut_bones})
+    for(const Control_bone<Point>& bone : *bones)
+    {
+      Svg_overlay::Line line;
+      line.dashed = bones == &skeleton.cut_bones;
+      for(const Point& p : bone.points)
+        line.points.push_back(to_vec3(p));
+      if(line.points.size() < 2 && bone.parent < skeleton.joints.size() && bone.child < skeleton.joints.size())
+        line.points = {to_vec3(skeleton.joints[bone.parent].point), to_vec3(skeleton.joints[bone.child].point)};
+      overlay.lines.push_back(std::move(line));
+    }
+  for(const Control_joint<Point>& joint : skeleton.joints)
+    overlay.dots.push_back({to_vec3(joint.point), joint.radius, joint_colour(joint.kind)});
+  return overlay;
+}
 
 } // namespace internal
 
@@ -104,18 +150,59 @@ std::ostream& write_svg_preview(std::ostream& os, const FaceGraph& mesh,
                                 const Control_skeleton<Point>& skeleton, int view_size = 360,
                                 const std::string& title = std::string())
 {
-  internal::Svg_overlay overlay;
-  for(const auto* bones : {&skeleton.bones, &skeleton.cut_bones})
-    for(const Control_bone<Point>& bone : *bones)
+  return internal::write_svg_views(os, mesh, internal::control_skeleton_overlay(skeleton), view_size, title);
+}
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// Writes an SVG picture of `mesh` coloured by an integer label per vertex, with `skeleton`
+/// drawn over it, in the views of `write_svg_preview()`: for example the hard segmentation
+/// of the mesh by bone (`compute_skinning_weights()`'s `bone_segmentation_map`). A face takes
+/// the label that most of its corners have (the smallest on a tie), coloured from a cycle of
+/// 12 colours (label modulo 12) and shaded by the facing angle; a negative label is grey.
+///
+/// \param os the stream written to.
+/// \param mesh a triangle mesh, a model of `FaceListGraph` with a vertex point map and a
+///        vertex index map.
+/// \param vertex_labels one label per vertex, indexed by the mesh's vertex index map.
+/// \param skeleton the control skeleton drawn over the mesh, in the mesh's coordinates.
+/// \param view_size the width and height of each view, in pixels, in [32, 4096].
+/// \param title a line of text written above the views (escaped), e.g. the file name.
+/// \returns `os`. \throws as `write_svg_preview()`, and std::invalid_argument when
+///          `vertex_labels` does not have one label per vertex.
+/// \b Complexity: O(F log F) for F faces.
+template <typename FaceGraph, typename Point>
+std::ostream& write_svg_preview_of_labels(std::ostream& os, const FaceGraph& mesh, const std::vector<int>& vertex_labels,
+                                          const Control_skeleton<Point>& skeleton, int view_size = 360,
+                                          const std::string& title = std::string())
+{
+  if(vertex_labels.size() != static_cast<std::size_t>(num_vertices(mesh)))
+    throw std::invalid_argument("write_svg_preview_of_labels: one label per vertex is needed");
+  internal::Svg_overlay overlay = internal::control_skeleton_overlay(skeleton);
+  const auto vim = CGAL::get_initialized_vertex_index_map(mesh);
+  std::vector<int> corners;
+  for(auto f : faces(mesh)) // the triangles in the order of mesh_triangles(): fans per face
+  {
+    corners.clear();
+    for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+      corners.push_back(vertex_labels[get(vim, v)]);
+    std::vector<int> sorted = corners;
+    std::sort(sorted.begin(), sorted.end());
+    int label = sorted.front(), best = 0;
+    for(std::size_t i = 0; i < sorted.size();)
     {
-      internal::Svg_overlay::Line line;
-      line.dashed = bones == &skeleton.cut_bones;
-      for(const Point& p : bone.points)
-        line.points.push_back(internal::to_vec3(p));
-      overlay.lines.push_back(std::move(line));
+      std::size_t j = i;
+      while(j < sorted.size() && sorted[j] == sorted[i])
+        ++j;
+      if(int(j - i) > best)
+      {
+        best = int(j - i);
+        label = sorted[i];
+      }
+      i = j;
     }
-  for(const Control_joint<Point>& joint : skeleton.joints)
-    overlay.dots.push_back({internal::to_vec3(joint.point), joint.radius, internal::joint_colour(joint.kind)});
+    for(std::size_t t = 2; t < corners.size(); ++t)
+      overlay.triangle_labels.push_back(label);
+  }
   return internal::write_svg_views(os, mesh, overlay, view_size, title);
 }
 
@@ -216,7 +303,7 @@ std::ostream& write_svg_views(std::ostream& os, const FaceGraph& mesh, const Svg
     };
 
     // Front-facing triangles, back to front, with a grey level from the facing angle.
-    struct Drawn { double depth; int grey; std::size_t index; };
+    struct Drawn { double depth; int grey; std::size_t index; int label; };
     std::vector<Drawn> drawn;
     for(std::size_t i = 0; i < triangles.size(); ++i)
     {
@@ -231,7 +318,8 @@ std::ostream& write_svg_views(std::ostream& os, const FaceGraph& mesh, const Svg
         continue;
       const double depth = internal::dot3(t[0], toward_viewer) + internal::dot3(t[1], toward_viewer) +
                            internal::dot3(t[2], toward_viewer);
-      drawn.push_back({depth, static_cast<int>(std::min(15.0, facing * 16)), i});
+      drawn.push_back({depth, static_cast<int>(std::min(15.0, facing * 16)), i,
+                       overlay.triangle_labels.empty() ? -1 : overlay.triangle_labels.at(i)});
     }
     // Back to front by slabs of depth (a 48th of the depth range each), and by grey within
     // a slab, so that a slab's triangles of one grey make one path: front-facing triangles
@@ -246,16 +334,15 @@ std::ostream& write_svg_views(std::ostream& os, const FaceGraph& mesh, const Svg
     auto slab_of = [&](const Drawn& d) { return static_cast<int>((d.depth - farthest) / slab); };
     std::sort(drawn.begin(), drawn.end(), [&](const Drawn& a, const Drawn& b) {
       const int sa = slab_of(a), sb = slab_of(b);
-      return sa != sb ? sa < sb : a.grey != b.grey ? a.grey < b.grey : a.depth < b.depth;
+      return sa != sb ? sa < sb : a.label != b.label ? a.label < b.label : a.grey != b.grey ? a.grey < b.grey : a.depth < b.depth;
     });
     os << "<g stroke-linejoin=\"round\" stroke-width=\"0.6\">\n";
     for(std::size_t k = 0; k < drawn.size();)
     {
-      const int grey = drawn[k].grey;
-      const int level = 120 + 8 * grey;
-      os << "<path fill=\"rgb(" << level << ',' << level << ',' << level + 6 << ")\" stroke=\"rgb(" << level << ','
-         << level << ',' << level + 6 << ")\" d=\"";
-      for(; k < drawn.size() && drawn[k].grey == grey; ++k)
+      const int grey = drawn[k].grey, label = drawn[k].label;
+      const std::string fill = triangle_fill(label, grey);
+      os << "<path fill=\"" << fill << "\" stroke=\"" << fill << "\" d=\"";
+      for(; k < drawn.size() && drawn[k].grey == grey && drawn[k].label == label; ++k)
       {
         // Whole pixels; a triangle that rounds to less than a pixel is left out (its
         // neighbours, drawn with round joins, cover it).

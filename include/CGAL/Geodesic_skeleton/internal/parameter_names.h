@@ -45,3 +45,9 @@ CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(number_of_reeb_intervals)
 // voxelize (appended)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(keep_surface_voxels)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(small_piece_fraction)
+
+// compute_skinning_weights
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(max_bones_per_vertex)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(falloff)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(influence_ratio)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(bone_segmentation_map)

@@ -1,0 +1,185 @@
+// Specification of compute_skinning_weights(): weights that skin a mesh to a control
+// skeleton (non-negative, summing to 1, at most K per vertex, local, through the solid).
+#include <CGAL/Geodesic_skeleton/compute_skinning_weights.h>
+#include <CGAL/Geodesic_skeleton/extract_control_skeleton.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <Geodesic_skeleton_test/rigs.h>
+#include <Geodesic_skeleton_test/shapes.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+#include <vector>
+
+namespace gs = CGAL::Geodesic_skeleton;
+namespace params = CGAL::Geodesic_skeleton::parameters;
+namespace shapes = Geodesic_skeleton_test;
+
+using Point = Geodesic_skeleton_test::Rig_point;
+using Mesh = Geodesic_skeleton_test::Rig_mesh;
+using Control = Geodesic_skeleton_test::Rig_skeleton;
+using vertex_descriptor = Mesh::Vertex_index;
+using Geodesic_skeleton_test::bar;
+using Geodesic_skeleton_test::bar_skeleton;
+using Geodesic_skeleton_test::chain_skeleton;
+using Geodesic_skeleton_test::weights_of;
+
+namespace {
+
+double weight_of(const gs::Bone_weights& w, std::size_t bone)
+{
+  for(std::size_t i = 0; i < w.size(); ++i)
+    if(w.bone[i] == bone)
+      return w.weight[i];
+  return 0;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(skinning_weights)
+
+BOOST_AUTO_TEST_CASE(weights_are_non_negative_sorted_and_sum_to_one)
+{
+  const auto [cow, control] = shapes::demo_mesh_with_skeleton("cow.off");
+  BOOST_REQUIRE_GT(control.bones.size(), 5u);
+  gs::Skinning_report report;
+  const auto weights = weights_of(cow, control, CGAL::parameters::default_values(), &report);
+  BOOST_CHECK_GT(report.solid_voxels, 1000u);
+  // The bounded searches visit far fewer voxels than one full search per bone.
+  BOOST_CHECK_LT(report.voxel_visits, report.solid_voxels * control.bones.size() / 2);
+  for(const gs::Bone_weights& w : weights)
+  {
+    BOOST_REQUIRE_GE(w.size(), 1u);
+    BOOST_REQUIRE_LE(w.size(), 4u);
+    double sum = 0;
+    for(std::size_t i = 0; i < w.size(); ++i)
+    {
+      BOOST_REQUIRE_LT(w.bone[i], control.bones.size());
+      BOOST_REQUIRE_GE(w.weight[i], 0.f);
+      if(i > 0)
+        BOOST_REQUIRE_GE(w.weight[i - 1], w.weight[i]);
+      sum += w.weight[i];
+    }
+    BOOST_REQUIRE_SMALL(sum - 1, 1e-5);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(at_most_max_bones_per_vertex_influence_a_vertex)
+{
+  const auto [cow, control] = shapes::demo_mesh_with_skeleton("cow.off");
+  std::size_t most[3] = {0, 0, 0};
+  for(int k : {1, 2, 8})
+  {
+    const auto weights = weights_of(cow, control, params::max_bones_per_vertex(k));
+    for(const gs::Bone_weights& w : weights)
+    {
+      BOOST_REQUIRE_LE(w.size(), std::size_t(k));
+      BOOST_REQUIRE_SMALL(w.total() - 1, 1e-5);
+      most[k == 1 ? 0 : k == 2 ? 1 : 2] = std::max(most[k == 1 ? 0 : k == 2 ? 1 : 2], w.size());
+    }
+  }
+  BOOST_CHECK_EQUAL(most[0], 1u);
+  BOOST_CHECK_EQUAL(most[1], 2u);
+  BOOST_CHECK_GT(most[2], 2u); // somewhere (a junction) more than two bones meet
+}
+
+BOOST_AUTO_TEST_CASE(a_bone_has_no_weight_at_the_far_end_of_a_long_bar)
+{
+  const Mesh mesh = bar();
+  const auto weights = weights_of(mesh, bar_skeleton(), params::resolution(96));
+  std::size_t blended = 0;
+  for(vertex_descriptor v : vertices(mesh))
+  {
+    const double z = mesh.point(v).z();
+    const gs::Bone_weights& w = weights[v];
+    if(z > 15)
+      BOOST_CHECK_EQUAL(weight_of(w, 0), 0.);
+    if(z < 5)
+      BOOST_CHECK_EQUAL(weight_of(w, 1), 0.);
+    if(std::abs(z - 10) < 0.6)
+    {
+      // At the joint, both bones pull about as much.
+      BOOST_CHECK_GT(weight_of(w, 0), 0.3);
+      BOOST_CHECK_GT(weight_of(w, 1), 0.3);
+      ++blended;
+    }
+  }
+  BOOST_CHECK_GT(blended, 20u);
+}
+
+BOOST_AUTO_TEST_CASE(the_segmentation_is_the_bone_of_largest_weight)
+{
+  const Mesh mesh = bar();
+  std::vector<int> segment(num_vertices(mesh), -1);
+  const auto weights = weights_of(
+      mesh, bar_skeleton(),
+      params::bone_segmentation_map(boost::make_iterator_property_map(segment.begin(), get(CGAL::vertex_index, mesh))));
+  for(vertex_descriptor v : vertices(mesh))
+  {
+    BOOST_CHECK_EQUAL(segment[v], int(weights[v].bone[0]));
+    const double z = mesh.point(v).z();
+    if(z < 9)
+      BOOST_CHECK_EQUAL(segment[v], 0);
+    if(z > 11)
+      BOOST_CHECK_EQUAL(segment[v], 1);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(distances_run_through_the_solid_not_through_the_air)
+{
+  // Two parallel bars 0.6 apart (their axes 2.6 apart), each with its own bone: straight-line
+  // distances would give each bar some weight of the other's bone (where a vertex is 1 from
+  // its own bone, it is 1.6 from the other, less than twice as far).
+  shapes::Soup soup = shapes::cylinder(1, 20, 24, 46, true);
+  shapes::append(soup, shapes::cylinder(1, 20, 24, 46, true), 2.6, 0, 0);
+  const Mesh mesh = shapes::mesh_of<Mesh>(soup);
+  Control skeleton = chain_skeleton({Point(0, 0, 2), Point(0, 0, 18)});
+  skeleton = chain_skeleton({Point(2.6, 0, 2), Point(2.6, 0, 18)}, 2, skeleton);
+  gs::Skinning_report report;
+  const auto weights = weights_of(mesh, skeleton, params::resolution(96), &report);
+  BOOST_CHECK_EQUAL(report.vertices_bound_in_straight_line, 0u);
+  for(vertex_descriptor v : vertices(mesh))
+  {
+    BOOST_REQUIRE_EQUAL(weights[v].size(), 1u);
+    BOOST_CHECK_EQUAL(weights[v].bone[0], mesh.point(v).x() < 1.3 ? 0u : 1u);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_piece_without_bone_follows_the_nearest_bone)
+{
+  shapes::Soup soup = shapes::cylinder(1, 20, 24, 46, true);
+  shapes::append(soup, shapes::icosphere(1, 2), 5, 0, 18); // a loose "eye" near the top
+  const Mesh mesh = shapes::mesh_of<Mesh>(soup);
+  gs::Skinning_report report;
+  const auto weights = weights_of(mesh, bar_skeleton(), CGAL::parameters::default_values(), &report);
+  BOOST_CHECK_EQUAL(report.vertices_bound_in_straight_line, 162u); // the icosphere's vertices
+  for(vertex_descriptor v : vertices(mesh))
+    if(mesh.point(v).x() > 3)
+    {
+      BOOST_REQUIRE_EQUAL(weights[v].size(), 1u);
+      BOOST_CHECK_EQUAL(weights[v].bone[0], 1u);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(bad_parameters_and_skeletons_are_refused)
+{
+  const Mesh mesh = bar();
+  const Control skeleton = bar_skeleton();
+  BOOST_CHECK_THROW(weights_of(mesh, skeleton, params::max_bones_per_vertex(0)), std::invalid_argument);
+  BOOST_CHECK_THROW(weights_of(mesh, skeleton, params::max_bones_per_vertex(9)), std::invalid_argument);
+  BOOST_CHECK_THROW(weights_of(mesh, skeleton, params::falloff(0.)), std::invalid_argument);
+  BOOST_CHECK_THROW(weights_of(mesh, skeleton, params::influence_ratio(1.)), std::invalid_argument);
+  Control no_bones = skeleton;
+  no_bones.bones.clear();
+  BOOST_CHECK_THROW(weights_of(mesh, no_bones, CGAL::parameters::default_values()), std::invalid_argument);
+  Control bad_joint = skeleton;
+  bad_joint.bones[1].child = 7;
+  BOOST_CHECK_THROW(weights_of(mesh, bad_joint, CGAL::parameters::default_values()), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
