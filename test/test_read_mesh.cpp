@@ -178,6 +178,20 @@ BOOST_AUTO_TEST_CASE(colours_are_skipped_as_CGAL_skips_them)
   std::filesystem::remove(path);
 }
 
+BOOST_AUTO_TEST_CASE(a_keyword_glued_to_a_huge_count_is_refused_before_CGAL_reads_it)
+{
+  // CGAL's header reader ends the keyword at any character that is not alphanumeric, so
+  // this header announces 1040010041 vertices, whose halfedge estimate overflows an int in
+  // CGAL (undefined behaviour, found by fuzzing). The count must be refused first.
+  const std::string path = temporary_path("glued.off");
+  std::ofstream(path, std::ios::binary) << "OFF\x18" "1040010041 0\n\n0 0 0\n";
+  Mesh mesh;
+  BOOST_CHECK_EXCEPTION(gio::read_mesh(path, mesh), std::runtime_error, [](const std::runtime_error& e) {
+    return std::string(e.what()).find("counts must be in [0, 2^28], got 1040010041") != std::string::npos;
+  });
+  std::filesystem::remove(path);
+}
+
 BOOST_AUTO_TEST_CASE(the_manifold_test_agrees_with_CGALs_on_random_soups)
 {
   std::mt19937 random(7);

@@ -143,6 +143,14 @@ inline std::string off_header_counts_problem(const std::string& path)
   }
   if(tokens.empty() || tokens[0].find("OFF") == std::string::npos)
     return std::string(); // not an OFF header: CGAL refuses the file itself
+  // CGAL ends the keyword at its first character that is not a letter or a digit, and drops
+  // that character: "OFF\x18" "1040010041" is the keyword OFF and a count (found by fuzzing).
+  const std::string& first = tokens[0];
+  const std::size_t keyword_end = std::size_t(
+      std::find_if(first.begin(), first.end(), [](unsigned char c) { return !std::isalnum(c); }) - first.begin());
+  if(keyword_end + 1 < first.size())
+    tokens.insert(tokens.begin() + 1, first.substr(keyword_end + 1));
+  tokens[0].resize(keyword_end);
   std::size_t first_count = 1;
   if(tokens.size() > 1 && tokens[1] == "BINARY")
     return std::string();
