@@ -12,8 +12,6 @@
 // skeleton against points of the pruned skeleton, and control segments of the pruned
 // skeleton (its branches) against bones of the smoothed, split skeleton.
 
-#include "benchmark_command_line.h"
-
 #include <CGAL/Geodesic_skeleton.h>
 #include <CGAL/Geodesic_skeleton/internal/skeleton_branches.h>
 

@@ -10,7 +10,7 @@
 //   skeletonize_benchmark [DATA_DIR] [--skeletonize PATH] [--repeats N] [--meshes a,b]
 //                         [--work-dir DIR] [--no-mcf] [--no-large] [--no-batch]
 
-#include "benchmark_command_line.h"
+#include "benchmark_common.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -43,6 +43,7 @@ extern char** environ;
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
+using benchmark_common::median;
 namespace fs = std::filesystem;
 
 namespace {
@@ -52,12 +53,6 @@ using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point start)
 {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-double median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0 : v[v.size() / 2];
 }
 
 struct Process_run
@@ -171,7 +166,7 @@ int main(int argc, char* argv[])
     else if(arg == "--repeats" && i + 1 < argc)
       repeats = std::max(1, std::atoi(argv[++i]));
     else if(arg == "--meshes" && i + 1 < argc)
-      names = split_commas(argv[++i]);
+      names = benchmark_common::split_commas(argv[++i]);
     else if(arg == "--work-dir" && i + 1 < argc)
       work_dir = argv[++i];
     else if(arg == "--no-mcf")

@@ -1,10 +1,17 @@
 #!/usr/bin/env bash
 # Installs, with apt-get, the Debian packages that building, testing and documenting the
 # package need, skipping those already installed. Needs root (or sudo).
+#
+#   bash scripts/install_dependencies.sh [--with-blender]
 set -euo pipefail
 
 packages=(g++ cmake make libcgal-dev libcgal-demo libboost-graph-dev libboost-test-dev
           libeigen3-dev nlohmann-json3-dev doxygen libassimp-dev libtinygltf-dev)
+# --with-blender (the tests): Blender and the numpy its glTF importer needs, to import and
+# pose the skinned glTF files that skeletonize writes.
+if [ "${1:-}" = "--with-blender" ]; then
+  packages+=(blender python3-numpy)
+fi
 
 missing=()
 for p in "${packages[@]}"; do
