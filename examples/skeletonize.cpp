@@ -8,10 +8,10 @@
 // standard output when there is no -o), .obj, .bvh, .polylines.txt, and .glb or .gltf (the
 // mesh skinned to its skeleton). See --help.
 
+#include "skeletonize_formats.h"
+
 #include <CGAL/Geodesic_skeleton.h>
-#include <CGAL/Geodesic_skeleton/IO/gltf.h>
 #include <CGAL/Geodesic_skeleton/IO/read_control_skeleton_json.h>
-#include <CGAL/Geodesic_skeleton/IO/read_mesh_with_assimp.h>
 #include <CGAL/Geodesic_skeleton/compute_skinning_weights.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -36,6 +36,7 @@
 #include <string>
 #include <vector>
 
+#include <dlfcn.h>  // dlopen: the formats' plug-in
 #include <unistd.h> // isatty
 #if defined(__GLIBC__)
 #include <malloc.h> // mallopt
@@ -48,9 +49,9 @@ namespace gs = CGAL::Geodesic_skeleton;
 namespace params = CGAL::Geodesic_skeleton::parameters;
 namespace ranges = CGAL::Geodesic_skeleton::parameter_ranges;
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using Mesh = CGAL::Surface_mesh<Point>;
+using skeletonize_formats::Kernel;
+using skeletonize_formats::Mesh;
+using skeletonize_formats::Point;
 using vertex_descriptor = boost::graph_traits<Mesh>::vertex_descriptor;
 
 namespace {
@@ -267,13 +268,42 @@ bool is_scene_file(const std::string& path)
 
 bool is_gltf_output(const std::string& path) { return ends_with(path, ".glb") || ends_with(path, ".gltf"); }
 
+// The plug-in of the scene formats (skeletonize_formats.h), loaded once, on first use, from
+// the folder of this program.
+const skeletonize_formats::Functions& scene_formats()
+{
+  static const skeletonize_formats::Functions* functions = nullptr;
+  static std::string problem;
+  static std::once_flag loaded;
+  std::call_once(loaded, [] {
+    std::error_code error;
+    const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", error);
+    const std::string path =
+        error ? std::string(skeletonize_formats::file_name) : (program.parent_path() / skeletonize_formats::file_name).string();
+    void* library = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if(library == nullptr)
+    {
+      problem = std::string("reading FBX, glTF and DAE files and writing glTF files need the plug-in ") +
+                skeletonize_formats::file_name + " beside skeletonize: " + dlerror();
+      return;
+    }
+    using Entry_point = const skeletonize_formats::Functions* (*)();
+    if(auto entry = reinterpret_cast<Entry_point>(dlsym(library, skeletonize_formats::entry_point)))
+      functions = entry();
+    else
+      problem = path + " is not skeletonize's formats plug-in";
+  });
+  if(functions == nullptr)
+    throw Usage_error(problem);
+  return *functions;
+}
+
 // The skinning weights of the mesh for the control skeleton, and what they cost.
 struct Skinning
 {
   std::vector<gs::Bone_weights> weights;
   std::vector<int> segment; // the bone of largest weight of each vertex
   gs::Skinning_report report;
-  auto weight_map() const { return boost::make_iterator_property_map(weights.begin(), get(CGAL::vertex_index, mesh)); }
   const Mesh& mesh;
 };
 
@@ -333,7 +363,10 @@ Mesh read_mesh(const std::string& path)
   try
   {
     if(is_scene_file(path))
-      gs::IO::read_mesh_with_assimp(path, mesh);
+    {
+      if(const std::string problem = scene_formats().read_scene(path, mesh); !problem.empty())
+        throw Usage_error(problem);
+    }
     else
       gs::IO::read_mesh(path, mesh);
   }
@@ -552,14 +585,10 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
   else if(to_gltf)
   {
     std::ostringstream out(std::ios::binary);
-    try
-    {
-      gs::IO::write_glTF(out, mesh, control, skinning.weight_map(), ends_with(output, ".glb"));
-    }
-    catch(const std::exception& e)
-    {
-      throw Usage_error(output + ": " + e.what());
-    }
+    if(const std::string problem =
+           scene_formats().write_glTF(out, mesh, control, skinning.weights, ends_with(output, ".glb"));
+       !problem.empty())
+      throw Usage_error(output + ": " + problem);
     text = out.str();
   }
   else
@@ -634,6 +663,8 @@ int run(const Options& o)
     throw Usage_error("--svg-stage must be control, pruned, thinned, reeb or weights, got '" + o.svg_stage + "'");
   if(!o.skeleton.empty() && o.svg_stage != "control" && o.svg_stage != "weights")
     throw Usage_error("--svg-stage " + o.svg_stage + " shows a stage of the extraction, which --skeleton skips");
+  if(is_scene_file(o.input) || is_gltf_output(o.output))
+    scene_formats(); // fails now, before the work, when the plug-in is missing
   skeletonize(o, o.input, o.output);
   return 0;
 }
