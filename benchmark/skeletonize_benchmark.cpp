@@ -137,13 +137,20 @@ double read_bytes_ms(const std::string& path)
   return ms_since(start);
 }
 
+// The heap in use: small blocks and blocks of their own mapping (large arrays) alike.
+std::size_t heap_in_use()
+{
+  const struct mallinfo2 heap = mallinfo2();
+  return heap.uordblks + heap.hblkhd;
+}
+
 // The heap that a Surface_mesh of the file takes once read (its own size in memory).
 double mesh_size_mib(const std::string& path)
 {
-  const std::size_t before = mallinfo2().uordblks;
+  const std::size_t before = heap_in_use();
   auto* mesh = new Mesh;
   CGAL::IO::read_polygon_mesh(path, *mesh);
-  const std::size_t after = mallinfo2().uordblks;
+  const std::size_t after = heap_in_use();
   delete mesh;
   return double(after - before) / (1024 * 1024);
 }
