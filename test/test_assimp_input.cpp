@@ -46,28 +46,43 @@ bool refused_with(const std::string& path, const std::string& words)
   return false;
 }
 
+// Writes the bar, skinned to its skeleton, as a glTF file.
+void write_skinned_bar(const std::string& path)
+{
+  const Mesh bar = shapes::bar();
+  const auto skeleton = shapes::bar_skeleton();
+  const auto weights = shapes::weights_of(bar, skeleton, CGAL::parameters::default_values());
+  gs::IO::write_glTF(path, bar, skeleton,
+                     boost::make_iterator_property_map(weights.begin(), get(CGAL::vertex_index, bar)));
+}
+
+// Reads `path` (removed after) and checks it is the bar: its counts, closed, 20 long along z
+// (with its bottom at z = 0 when `at_origin`: the formats that keep the file's placement).
+void check_reads_back_as_the_bar(const std::string& path, bool at_origin)
+{
+  const Mesh bar = shapes::bar();
+  Mesh back;
+  gs::IO::read_mesh_with_assimp(path, back);
+  std::remove(path.c_str());
+  BOOST_CHECK_EQUAL(num_vertices(back), num_vertices(bar));
+  BOOST_CHECK_EQUAL(num_faces(back), num_faces(bar));
+  BOOST_CHECK(CGAL::is_closed(back));
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(back);
+  BOOST_CHECK_CLOSE(box.zmax() - box.zmin(), 20., 1e-3);
+  if(at_origin)
+    BOOST_CHECK_SMALL(box.zmin(), 1e-6);
+}
+
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(assimp_input)
 
 BOOST_AUTO_TEST_CASE(a_skinned_gltf_written_by_the_package_reads_back)
 {
-  const Mesh bar = shapes::bar();
-  const auto skeleton = shapes::bar_skeleton();
-  const auto weights = shapes::weights_of(bar, skeleton, CGAL::parameters::default_values());
   for(const std::string path : {"assimp_bar.gltf", "assimp_bar.glb"})
   {
-    gs::IO::write_glTF(path, bar, skeleton,
-                       boost::make_iterator_property_map(weights.begin(), get(CGAL::vertex_index, bar)));
-    Mesh back;
-    gs::IO::read_mesh_with_assimp(path, back);
-    std::remove(path.c_str());
-    BOOST_CHECK_EQUAL(num_vertices(back), num_vertices(bar));
-    BOOST_CHECK_EQUAL(num_faces(back), num_faces(bar));
-    BOOST_CHECK(CGAL::is_closed(back));
-    const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(back);
-    BOOST_CHECK_SMALL(box.zmin(), 1e-6);
-    BOOST_CHECK_CLOSE(box.zmax(), 20., 1e-5);
+    write_skinned_bar(path);
+    check_reads_back_as_the_bar(path, true);
   }
 }
 
@@ -77,11 +92,7 @@ BOOST_AUTO_TEST_CASE(fbx_and_dae_files_read_into_the_same_mesh)
   // reads back as the same closed bar: the formats characters come in. ASCII FBX: Assimp
   // 5.2's importer refuses the binary FBX its own exporter writes ("block offset is out of
   // range"); binary FBX from Blender reads (checked by hand, doc/manual.md).
-  const Mesh bar = shapes::bar();
-  const auto skeleton = shapes::bar_skeleton();
-  const auto weights = shapes::weights_of(bar, skeleton, CGAL::parameters::default_values());
-  gs::IO::write_glTF("assimp_bar_source.glb", bar, skeleton,
-                     boost::make_iterator_property_map(weights.begin(), get(CGAL::vertex_index, bar)));
+  write_skinned_bar("assimp_bar_source.glb");
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile("assimp_bar_source.glb", 0);
   std::remove("assimp_bar_source.glb");
@@ -92,14 +103,7 @@ BOOST_AUTO_TEST_CASE(fbx_and_dae_files_read_into_the_same_mesh)
     Assimp::Exporter exporter;
     BOOST_REQUIRE_MESSAGE(exporter.Export(scene, format, path) == AI_SUCCESS,
                           format << ": " << exporter.GetErrorString());
-    Mesh back;
-    gs::IO::read_mesh_with_assimp(path, back);
-    std::remove(path.c_str());
-    BOOST_CHECK_EQUAL(num_vertices(back), num_vertices(bar));
-    BOOST_CHECK_EQUAL(num_faces(back), num_faces(bar));
-    BOOST_CHECK(CGAL::is_closed(back));
-    const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(back);
-    BOOST_CHECK_CLOSE(box.zmax() - box.zmin(), 20., 1e-3);
+    check_reads_back_as_the_bar(path, false);
   }
 }
 
