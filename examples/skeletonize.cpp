@@ -13,12 +13,12 @@
 #include <CGAL/Geodesic_skeleton.h>
 #include <CGAL/Geodesic_skeleton/IO/read_control_skeleton_json.h>
 #include <CGAL/Geodesic_skeleton/compute_skinning_weights.h>
+#include <CGAL/Geodesic_skeleton/internal/disjoint_sets.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
-#include <boost/pending/disjoint_sets.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -406,26 +406,13 @@ void write_file(const std::string& path, const std::string& text)
 // property maps, and on a mesh of a million faces costs as much as the whole chain).
 std::size_t count_connected_parts(const Mesh& mesh)
 {
-  const std::size_t n = mesh.number_of_vertices();
-  std::vector<std::size_t> rank(n), parent(n);
-  boost::disjoint_sets<std::size_t*, std::size_t*> parts(rank.data(), parent.data());
-  std::size_t parts_count = 0;
+  gs::internal::Disjoint_sets parts(mesh.num_vertices()); // by vertex index, removed ones too
+  std::size_t count = 0;
   for(vertex_descriptor v : vertices(mesh))
-    if(!mesh.is_isolated(v))
-    {
-      parts.make_set(std::size_t(v));
-      ++parts_count;
-    }
+    count += !mesh.is_isolated(v);
   for(auto e : edges(mesh))
-  {
-    const std::size_t a = parts.find_set(std::size_t(source(e, mesh))), b = parts.find_set(std::size_t(target(e, mesh)));
-    if(a != b)
-    {
-      parts.link(a, b);
-      --parts_count;
-    }
-  }
-  return parts_count;
+    count -= parts.unite(std::size_t(source(e, mesh)), std::size_t(target(e, mesh)));
+  return count;
 }
 
 nlohmann::json mesh_json(const Mesh& mesh)
@@ -500,17 +487,10 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
         params::spur_length_factor(o.spur_length_factor), params::smoothing_window(o.smoothing_window),
         params::bend_threshold(o.bend_threshold), params::straightness_tolerance(o.straightness_tolerance),
         params::minimum_bone_length_factor(o.minimum_bone_length_factor),
-        params::number_of_reeb_intervals(o.reeb_intervals), params::curve_skeleton_output(&curve));
-    if(o.reeb_graph && thinned_graph)
-      report = gs::extract_control_skeleton(
-          mesh, control,
-          params::combine(np, params::thinned_skeleton_output(&thinned), params::reeb_graph_output(&reeb)));
-    else if(o.reeb_graph)
-      report = gs::extract_control_skeleton(mesh, control, params::combine(np, params::reeb_graph_output(&reeb)));
-    else if(thinned_graph)
-      report = gs::extract_control_skeleton(mesh, control, params::combine(np, params::thinned_skeleton_output(&thinned)));
-    else
-      report = gs::extract_control_skeleton(mesh, control, np);
+        params::number_of_reeb_intervals(o.reeb_intervals), params::curve_skeleton_output(&curve),
+        params::thinned_skeleton_output(thinned_graph ? &thinned : nullptr),
+        params::reeb_graph_output(o.reeb_graph ? &reeb : nullptr));
+    report = gs::extract_control_skeleton(mesh, control, np);
   }
   catch(const std::exception& e) // the stages' messages name the stage and the problem
   {
@@ -530,8 +510,7 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
                            {"mesh", mesh_json(mesh)},
                            {"timings_ms", {{"skinning_weights", skinning.report.milliseconds}}},
                            {"control", gs::IO::control_skeleton_to_json(control)}};
-    if(skin)
-      add_skinning_json(o, skinning, json);
+    add_skinning_json(o, skinning, json); // a given skeleton is always skinned
     text = json.dump(1) + "\n";
   }
   else if(to_json)
@@ -558,6 +537,8 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
     if(skin)
       computed.push_back("skinning_weights");
     const nlohmann::json control_json = gs::IO::control_skeleton_to_json(control);
+    // Batch mode's meshes share the process: its peak is no one mesh's.
+    const double peak_mib = o.batch.empty() ? peak_resident_mib() : -1;
     nlohmann::json json = {
         {"input", input},
         {"mesh", mesh_json(mesh)},
@@ -572,8 +553,7 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
                         {"reeb_intervals", o.reeb_intervals}, {"voxel_size", report.voxel_size}}},
         {"computed", computed},
         {"timings_ms", timings},
-        {"peak_memory_mib", o.batch.empty() && peak_resident_mib() >= 0 ? nlohmann::json(peak_resident_mib())
-                                                                         : nlohmann::json(nullptr)},
+        {"peak_memory_mib", peak_mib >= 0 ? nlohmann::json(peak_mib) : nlohmann::json(nullptr)},
         {"stages", stages},
         {"skeleton", gs::IO::curve_skeleton_to_json(curve)},
         {"control", {{"joints", control_json["joints"]}, {"bones", control_json["bones"]},
@@ -671,15 +651,11 @@ int run(const Options& o)
 
 // ---- Batch mode ------------------------------------------------------------------------
 
-bool is_mesh_file(const std::filesystem::path& path)
+// The files a batch takes from a folder: CGAL's common mesh formats and the scene formats.
+bool is_mesh_file(const std::string& path)
 {
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  for(const char* mesh_extension : {".off", ".obj", ".ply", ".stl", ".fbx", ".gltf", ".glb", ".dae"})
-    if(extension == mesh_extension)
-      return true;
-  return false;
+  const std::string extension = gs::IO::internal::file_extension(path);
+  return extension == "off" || extension == "obj" || extension == "ply" || extension == "stl" || is_scene_file(path);
 }
 
 // The meshes of a batch: the mesh files of a folder, by name, or the lines of a list file
@@ -693,7 +669,7 @@ std::vector<std::string> batch_inputs(const std::string& batch)
   if(fs::is_directory(batch, error))
   {
     for(const fs::directory_entry& entry : fs::directory_iterator(batch, error))
-      if(entry.is_regular_file(error) && is_mesh_file(entry.path()))
+      if(entry.is_regular_file(error) && is_mesh_file(entry.path().string()))
         inputs.push_back(entry.path().string());
     if(error)
       throw Usage_error(batch + ": cannot list the folder: " + error.message());

@@ -215,4 +215,36 @@ BOOST_AUTO_TEST_CASE(the_report_and_the_visitor_see_every_stage)
   BOOST_TEST(mapped == num_vertices(cow));
 }
 
+BOOST_AUTO_TEST_CASE(a_null_output_pointer_asks_for_nothing)
+{
+  // The same call with null output pointers makes no Reeb graph and no thinned graph, and
+  // the same control skeleton; with real pointers it makes both.
+  using Skeleton = gs::Curve_skeleton<Point, boost::graph_traits<Mesh>::vertex_descriptor>;
+  const Mesh cow = test::demo_mesh<Mesh>("cow.off");
+  Control with_outputs, without_outputs;
+  Skeleton thinned;
+  gs::Reeb_graph<Mesh> reeb;
+  const gs::Control_skeleton_report asked = gs::extract_control_skeleton(
+      cow, with_outputs,
+      gs::parameters::combine(gs::parameters::thinned_skeleton_output(&thinned),
+                              gs::parameters::reeb_graph_output(&reeb)));
+  const gs::Control_skeleton_report not_asked = gs::extract_control_skeleton(
+      cow, without_outputs,
+      gs::parameters::combine(gs::parameters::thinned_skeleton_output(static_cast<Skeleton*>(nullptr)),
+                              gs::parameters::reeb_graph_output(static_cast<gs::Reeb_graph<Mesh>*>(nullptr)),
+                              gs::parameters::curve_skeleton_output(static_cast<Skeleton*>(nullptr))));
+  auto timed_reeb_graph = [](const gs::Control_skeleton_report& r) {
+    return std::any_of(r.timings_ms.begin(), r.timings_ms.end(), [](const auto& t) { return t.first == "reeb_graph"; });
+  };
+  BOOST_TEST(timed_reeb_graph(asked));
+  BOOST_TEST(asked.reeb_nodes > 0u);
+  BOOST_TEST(num_vertices(thinned) == asked.thinned.points);
+  BOOST_TEST(!timed_reeb_graph(not_asked));
+  BOOST_TEST(not_asked.reeb_nodes == 0u);
+  BOOST_TEST(not_asked.thinned.points == asked.thinned.points);
+  BOOST_TEST(without_outputs.joints.size() == with_outputs.joints.size());
+  for(std::size_t j = 0; j < with_outputs.joints.size(); ++j)
+    BOOST_TEST(without_outputs.joints[j].point == with_outputs.joints[j].point);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -203,8 +203,8 @@ inline void normalise(Bone_weights& weights)
 ///         range (the message names it); what `voxelize()` throws.
 /// \throws std::length_error when the fields would need more memory than `memory_limit`.
 ///
-/// \b Complexity: `voxelize()`'s, plus O(V log V) for the nearest-bone search over the V
-/// solid voxels, plus O(V_b log V_b) per bone for the V_b voxels its bounded search visits
+/// \b Complexity: `voxelize()`'s, plus O(V) for the nearest-bone search over the V solid
+/// voxels (a bucket queue), plus O(V_b) per bone for the V_b voxels its bounded search visits
 /// (in total a small multiple of V: `Skinning_report::voxel_visits`), plus O(N (B_v + 1))
 /// for N vertices and B_v bones reaching a vertex; O(V_box + V + N) memory.
 template <typename TriangleMesh, typename Point, typename WeightMap,
@@ -282,13 +282,18 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   internal::Bucket_queue queue;
   internal::voxel_dijkstra(solid, all_seeds, nearest, reached, queue,
                            [](std::uint32_t, internal::Voxel_distance) { return true; });
-  std::vector<float> nearest_at_vertex(n, HUGE_VALF); // d1 at each vertex, in voxels
+  // (s (d1 + 1/2))^-p at each vertex, the term that makes a bone's weight zero where it is s
+  // times as far as the nearest bone (d1 in voxels, read in float precision; 0 where no bone
+  // reaches the vertex). Computed once here, not once per bone that reaches the vertex.
+  std::vector<double> zero_weight_term(n, 0.);
   // The solid voxels at a corner of a cell with vertices: the only ones read at vertices.
   std::vector<std::uint8_t> read_at_vertices(solid.size(), 0);
   for(std::size_t cell = 0; cell < solid.layout.volume(); ++cell)
     if(cells.has_vertices(cell))
     {
-      cells.read_cell(solid, cell, nearest, [&](std::uint32_t v, double d) { nearest_at_vertex[v] = float(d); });
+      cells.read_cell(solid, cell, nearest, [&](std::uint32_t v, double d) {
+        zero_weight_term[v] = std::pow(s * (double(float(d)) + 0.5), -p);
+      });
       for(std::ptrdiff_t offset : cells.corner_offsets)
         if(const std::int32_t u = solid.solid_of_cell[std::size_t(std::ptrdiff_t(cell) + offset)]; u >= 0)
           read_at_vertices[std::size_t(u)] = 1;
@@ -325,7 +330,7 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
         }
     for(std::uint32_t cell : touched_cells)
       cells.read_cell(solid, cell, distance, [&](std::uint32_t v, double d) {
-        const double w = std::pow(d + 0.5, -p) - std::pow(s * (double(nearest_at_vertex[v]) + 0.5), -p);
+        const double w = std::pow(d + 0.5, -p) - zero_weight_term[v];
         if(w > 0)
           internal::keep_largest(weights[v], k, std::uint32_t(b), float(w));
       });

@@ -79,6 +79,14 @@ struct Default_pipeline_visitor
 
 namespace internal {
 
+// What an output named parameter (`curve_skeleton_output`, ...) points to, or null when it
+// is not given or is a null pointer: that output is then not made.
+template <typename Output, typename NamedParameters, typename Tag>
+Output* output_pointer(const NamedParameters& np, Tag tag)
+{
+  return CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, tag), static_cast<Output*>(nullptr));
+}
+
 // The MAT radius of a voxel in voxels, as prune_skeleton() reads it.
 struct Radius_in_voxels_map
 {
@@ -188,7 +196,8 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 ///     pointer or a reference.
 ///   - `curve_skeleton_output` (package parameter): a pointer to a
 ///     `Curve_skeleton<Point, vertex_descriptor>` that receives the pruned, smoothed curve
-///     skeleton, with the mesh vertices mapped to its vertices (default: none).
+///     skeleton, with the mesh vertices mapped to its vertices (default: none). For this
+///     output and the next two, a null pointer is the same as none.
 ///   - `thinned_skeleton_output` (package parameter): a pointer to a
 ///     `Curve_skeleton<Point, vertex_descriptor>` that receives the skeleton straight
 ///     after thinning, before pruning (default: none).
@@ -257,12 +266,12 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   const double memory_limit = internal::memory_limit(np);
   std::optional<internal::Grid_line_crossings> grid_lines(std::in_place, std::move(rasterised.in_grid));
   auto mesh_lines = [&grid_lines]() -> internal::Grid_line_crossings& { return *grid_lines; };
-  if constexpr(!is_default_parameter<NamedParameters, internal_np::thinned_skeleton_output_t>::value)
+  if(Skeleton* thinned_output = internal::output_pointer<Skeleton>(np, internal_np::thinned_skeleton_output_tag))
   {
     Skeleton thinned;
     internal::to_graph_impl(skeleton, distances, mesh, thinned, vpm, memory_limit, mesh_lines);
     report.thinned = skeleton_statistics(thinned);
-    *get_parameter(np, internal_np::thinned_skeleton_output_tag) = std::move(thinned);
+    *thinned_output = std::move(thinned);
   }
   else
     report.thinned = internal::skeleton_statistics_of_voxels(skeleton);
@@ -292,12 +301,11 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   report.joints_moved_inside =
       internal::move_joints_inside(mesh, vpm, out, 0.25 * report.voxel_size, 2 * report.voxel_size);
   clock.finished("joints_inside");
-  if constexpr(!is_default_parameter<NamedParameters, internal_np::curve_skeleton_output_t>::value)
-    *get_parameter(np, internal_np::curve_skeleton_output_tag) = std::move(curve);
+  if(Skeleton* curve_output = internal::output_pointer<Skeleton>(np, internal_np::curve_skeleton_output_tag))
+    *curve_output = std::move(curve);
 
-  if constexpr(!is_default_parameter<NamedParameters, internal_np::reeb_graph_output_t>::value)
+  if(Reeb_graph<FaceGraph>* reeb = internal::output_pointer<Reeb_graph<FaceGraph>>(np, internal_np::reeb_graph_output_tag))
   {
-    auto* reeb = get_parameter(np, internal_np::reeb_graph_output_tag);
     const std::size_t intervals =
         choose_parameter(get_parameter(np, internal_np::number_of_reeb_intervals_tag),
                          static_cast<std::size_t>(parameter_ranges::number_of_reeb_intervals.default_value));

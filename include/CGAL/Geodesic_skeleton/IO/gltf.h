@@ -109,23 +109,7 @@ tinygltf::Model skinned_glTF_model(const TriangleMesh& mesh, const Control_skele
   if(skeleton.bones.size() + 2 * joints > std::numeric_limits<std::uint16_t>::max())
     throw std::invalid_argument(caller + ": too many bones and joints for 16-bit joint indices");
   // The bone that leads to each joint: one per joint with a parent, from that parent.
-  std::vector<long> incoming(joints, -1);
-  for(std::size_t b = 0; b < skeleton.bones.size(); ++b)
-  {
-    const Control_bone<Point>& bone = skeleton.bones[b];
-    const std::string name = "bone " + std::to_string(b) + " (" + std::to_string(bone.parent) + " -> " +
-                             std::to_string(bone.child) + ")";
-    if(bone.parent >= joints || bone.child >= joints)
-      throw std::invalid_argument(caller + ": " + name + " refers to a joint that does not exist");
-    if(skeleton.joints[bone.child].parent != long(bone.parent))
-      throw std::invalid_argument(caller + ": " + name + " does not go from its child's parent joint");
-    if(incoming[bone.child] >= 0)
-      throw std::invalid_argument(caller + ": two bones lead to joint " + std::to_string(bone.child));
-    incoming[bone.child] = long(b);
-  }
-  for(std::size_t j = 0; j < joints; ++j)
-    if(skeleton.joints[j].parent >= 0 && incoming[j] < 0)
-      throw std::invalid_argument(caller + ": joint " + std::to_string(j) + " has a parent but no bone leads to it");
+  const std::vector<long> incoming = Geodesic_skeleton::internal::bone_to_each_joint(skeleton, caller);
 
   tinygltf::Model model;
   model.asset.version = "2.0";

@@ -156,22 +156,9 @@ void read_control_skeleton_json(const nlohmann::json& json, Control_skeleton<Poi
   };
   if(control.contains("bones"))
   {
-    std::vector<bool> led_to(joints.size(), false);
     for(const auto& [parent, child] : internal::joint_pairs(control["bones"], "bones", joints.size()))
-    {
-      if(skeleton.joints[child].parent != long(parent))
-        throw std::invalid_argument("bone [" + std::to_string(parent) + ", " + std::to_string(child) +
-                                    "] does not match the parent of joint " + std::to_string(child) + " (" +
-                                    std::to_string(skeleton.joints[child].parent) + ")");
-      if(led_to[child])
-        throw std::invalid_argument("two bones lead to joint " + std::to_string(child));
-      led_to[child] = true;
       skeleton.bones.push_back(bone(parent, child));
-    }
-    for(std::size_t j = 0; j < joints.size(); ++j)
-      if(skeleton.joints[j].parent >= 0 && !led_to[j])
-        throw std::invalid_argument("no bone leads to joint " + std::to_string(j) + " from its parent " +
-                                    std::to_string(skeleton.joints[j].parent));
+    Geodesic_skeleton::internal::bone_to_each_joint(skeleton, "the control skeleton"); // they match the parents
   }
   else
     for(std::size_t j = 0; j < joints.size(); ++j)

@@ -7,6 +7,7 @@
 // The recursive split of one branch of a curve skeleton into bones (paper, III.B.ii).
 
 #include <CGAL/Geodesic_skeleton/chord_to_point_distance_accumulation.h>
+#include <CGAL/Geodesic_skeleton/internal/vec3.h>
 
 #include <CGAL/Simple_cartesian.h>
 
@@ -26,17 +27,6 @@ struct Bone_splitting_settings
   double minimum_bone_length_factor; // shortest bone, in MAT radii
   std::vector<double> chord_length_factors; // CPDA chord lengths, in MAT radii
 };
-
-// Distance from p to the segment [a, b].
-inline double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b)
-{
-  const Vec3 ab = sub(b, a), ap = sub(p, a);
-  const double l2 = ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2];
-  double t = l2 > 0 ? (ap[0] * ab[0] + ap[1] * ab[1] + ap[2] * ab[2]) / l2 : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  const Vec3 q{a[0] + t * ab[0], a[1] + t * ab[1], a[2] + t * ab[2]};
-  return norm3(sub(p, q));
-}
 
 class Branch_splitter
 {

@@ -66,8 +66,9 @@ inline const std::array<Vec3, 5>& ray_directions()
   return directions;
 }
 
-// Ray parity against a closed triangle soup: odd crossings along a ray means inside. Rays go along the axes first, so that a triangle
-// whose box misses the ray's line is skipped with a few comparisons. A ray that passes too
+// Ray parity against a closed triangle soup: odd crossings along a ray means inside. Rays
+// go along the axes first, so that a triangle whose box misses the ray's line is skipped
+// with a few comparisons. A ray that passes too
 // near an edge or a vertex of a triangle is dropped and another direction tried, from
 // `first_direction` on. Costs O(F) per query: meant for the few points in doubt.
 inline bool is_inside_closed_soup(const Vec3& p, const std::vector<Triangle3>& triangles,

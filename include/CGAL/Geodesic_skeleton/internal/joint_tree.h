@@ -69,6 +69,38 @@ Joint_tree joint_tree(const Control_skeleton<Point>& skeleton, const std::string
   return tree;
 }
 
+// The bone that leads to each joint (-1 for a root), once the bones and the parents are
+// checked to agree: every bone goes from its child's parent joint, and every joint with a
+// parent has exactly one bone leading to it. Throws std::invalid_argument "<caller>: ..."
+// otherwise, or when a bone refers to a joint that does not exist.
+template <typename Point>
+std::vector<long> bone_to_each_joint(const Control_skeleton<Point>& skeleton, const std::string& caller)
+{
+  const std::size_t joints = skeleton.joints.size();
+  std::vector<long> incoming(joints, -1);
+  for(std::size_t b = 0; b < skeleton.bones.size(); ++b)
+  {
+    const Control_bone<Point>& bone = skeleton.bones[b];
+    auto fail = [&](const std::string& problem) {
+      throw std::invalid_argument(caller + ": bone " + std::to_string(b) + " (" + std::to_string(bone.parent) +
+                                  " -> " + std::to_string(bone.child) + ") " + problem);
+    };
+    if(bone.parent >= joints || bone.child >= joints)
+      fail("refers to a joint that does not exist");
+    if(skeleton.joints[bone.child].parent != long(bone.parent))
+      fail("does not match the parent of joint " + std::to_string(bone.child) + " (" +
+           std::to_string(skeleton.joints[bone.child].parent) + ")");
+    if(incoming[bone.child] >= 0)
+      throw std::invalid_argument(caller + ": two bones lead to joint " + std::to_string(bone.child));
+    incoming[bone.child] = long(b);
+  }
+  for(std::size_t j = 0; j < joints; ++j)
+    if(skeleton.joints[j].parent >= 0 && incoming[j] < 0)
+      throw std::invalid_argument(caller + ": no bone leads to joint " + std::to_string(j) + " from its parent " +
+                                  std::to_string(skeleton.joints[j].parent));
+  return incoming;
+}
+
 } // namespace internal
 } // namespace Geodesic_skeleton
 } // namespace CGAL

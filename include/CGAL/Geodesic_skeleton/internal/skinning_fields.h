@@ -134,13 +134,7 @@ inline double distance_to_polyline(const Vec3& p, const std::vector<Vec3>& polyl
 {
   double best = norm3(sub(p, polyline.front()));
   for(std::size_t i = 0; i + 1 < polyline.size(); ++i)
-  {
-    const Vec3 d = sub(polyline[i + 1], polyline[i]);
-    const double length2 = dot3(d, d);
-    const double t = length2 > 0 ? std::clamp(dot3(sub(p, polyline[i]), d) / length2, 0., 1.) : 0.;
-    const Vec3 q{polyline[i][0] + t * d[0], polyline[i][1] + t * d[1], polyline[i][2] + t * d[2]};
-    best = std::min(best, norm3(sub(p, q)));
-  }
+    best = std::min(best, distance_to_segment(p, polyline[i], polyline[i + 1]));
   return best;
 }
 

@@ -7,6 +7,7 @@
 // Plain double 3-vectors for the package's inner loops (voxel grids, polylines), where a
 // kernel's exact types would cost for nothing.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -23,6 +24,16 @@ inline Vec3 cross3(const Vec3& a, const Vec3& b)
   return Vec3{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 inline double norm3(const Vec3& a) { return std::sqrt(dot3(a, a)); }
+
+// Distance from p to the segment [a, b].
+inline double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b)
+{
+  const Vec3 ab = sub(b, a);
+  const double l2 = dot3(ab, ab);
+  const double t = l2 > 0 ? std::clamp(dot3(sub(p, a), ab) / l2, 0.0, 1.0) : 0.0;
+  const Vec3 q{a[0] + t * ab[0], a[1] + t * ab[1], a[2] + t * ab[2]};
+  return norm3(sub(p, q));
+}
 
 // floor() for coordinates of a grid (finite, far below 2^62), without a library call.
 inline long floor_to_long(double x)

@@ -4,16 +4,17 @@
 #ifndef CGAL_GEODESIC_SKELETON_IO_INTERNAL_FAST_SOUP_READERS_H
 #define CGAL_GEODESIC_SKELETON_IO_INTERNAL_FAST_SOUP_READERS_H
 
-// Fast readers of the common forms of OFF, OBJ, STL and PLY into an Indexed_soup: the whole
-// file read at once, numbers parsed with std::from_chars (no stream, no locale), storage
-// reserved from the counts. They parse what exporters write and nothing more: each returns
-// false (and leaves the soup unspecified) at the first thing it does not know (OFF with
-// colours or normals, a binary STL that starts with "solid", a PLY property list with an
-// unusual type, negative OBJ indices, ...) or that is wrong (a bad count, a number that
+// Fast readers of the common forms of OFF, OBJ and binary STL into an Indexed_soup: the
+// whole file mapped or read at once, numbers parsed with std::from_chars (no stream, no
+// locale), storage reserved from the counts. They parse what exporters write and nothing
+// more: each returns false (and leaves the soup unspecified) at the first thing it does not
+// know (homogeneous or n-dimensional OFF, a binary STL that starts with "solid", negative
+// OBJ indices, ...) or that is wrong (a bad count, a number that
 // does not parse, an index out of range, a non-finite coordinate), and IO::read_mesh()
 // then reads the file with CGAL's readers and their checks, which name the problem.
 
 #include <CGAL/Geodesic_skeleton/IO/internal/indexed_soup.h>
+#include <CGAL/Geodesic_skeleton/IO/internal/mesh_file_checks.h>
 
 #if defined(__unix__) || defined(__APPLE__)
 #include <fcntl.h>
@@ -173,21 +174,13 @@ public:
     skip_blanks();
     if(m_p != m_end && *m_p == '+')
       ++m_p;
-    const auto result = std::from_chars(m_p, m_end, value);
-    if(result.ec != std::errc() || (result.ptr != m_end && !is_blank(*result.ptr) && *result.ptr != '/'))
-      return false;
-    m_p = result.ptr;
-    return true;
+    return parse(value);
   }
   template <typename Integer>
   bool integer(Integer& value)
   {
     skip_blanks();
-    const auto result = std::from_chars(m_p, m_end, value);
-    if(result.ec != std::errc() || (result.ptr != m_end && !is_blank(*result.ptr) && *result.ptr != '/'))
-      return false;
-    m_p = result.ptr;
-    return true;
+    return parse(value);
   }
   bool point(std::array<double, 3>& p) { return number(p[0]) && number(p[1]) && number(p[2]); }
   // Consumes `c` if it is the next character.
@@ -201,18 +194,26 @@ public:
   const char* position() const { return m_p; }
 
 private:
+  // A number at the cursor that ends at a blank, a '/' (OBJ corners) or the end.
+  template <typename T>
+  bool parse(T& value)
+  {
+    const auto result = std::from_chars(m_p, m_end, value);
+    if(result.ec != std::errc() || (result.ptr != m_end && !is_blank(*result.ptr) && *result.ptr != '/'))
+      return false;
+    m_p = result.ptr;
+    return true;
+  }
   static bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '#'; }
 
   const char* m_p;
   const char* m_end;
 };
 
-// Counts the header of a file announces are bounded as IO::read_mesh()'s checks bound
-// them (2^28 items, two bytes each at least), so that a few bytes cannot ask for
-// gigabytes of storage.
+// Counts of a header bounded as IO::read_mesh()'s checks bound them (mesh_file_checks.h).
 inline bool counts_fit(double items, std::size_t file_size)
 {
-  return items >= 0 && items <= double(1 << 28) && 2 * items <= double(file_size);
+  return items >= 0 && items <= largest_header_count && 2 * items <= double(file_size);
 }
 
 // "OFF", three counts, "x y z" lines, "n i_1 ... i_n" lines (a face colour after the

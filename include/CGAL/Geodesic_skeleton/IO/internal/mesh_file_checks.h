@@ -122,6 +122,11 @@ inline bool off_colour_is_readable(const std::vector<double>& e, std::size_t fir
   return true;
 }
 
+// The most items (vertices and faces together) a header may announce: a few bytes must
+// not ask for gigabytes of storage. Every item also takes two bytes of the file at least
+// ("0\n" is the shortest face), checked where the file's size is known.
+constexpr double largest_header_count = double(1 << 28);
+
 // CGAL 5.5's OFF header reader (File_header_OFF_impl.h) reads the three counts as int and
 // derives a halfedge count from them in int arithmetic: twice the edge count, or 2.1 times
 // (vertices + faces + 10), which overflow past about 10^9 (undefined behaviour), before any
@@ -156,7 +161,6 @@ inline std::string off_header_counts_problem(const std::string& path)
     return std::string();
   if(tokens[0].find("nOFF") != std::string::npos)
     ++first_count; // the dimension comes first
-  const double largest = double(1 << 28);
   double vertices_and_faces = 0;
   for(std::size_t i = first_count; i < first_count + 3 && i < tokens.size(); ++i)
   {
@@ -164,12 +168,12 @@ inline std::string off_header_counts_problem(const std::string& path)
     double value = 0;
     if(!(number >> value))
       return std::string(); // not a number: CGAL refuses it
-    if(!(value >= 0 && value <= largest))
+    if(!(value >= 0 && value <= largest_header_count))
       return "the OFF header's counts must be in [0, 2^28], got " + tokens[i];
     if(i < first_count + 2)
       vertices_and_faces += value;
   }
-  if(vertices_and_faces > largest)
+  if(vertices_and_faces > largest_header_count)
     return "the OFF header announces more than 2^28 vertices and faces";
   return std::string();
 }
