@@ -1,0 +1,347 @@
+// quality_benchmark: what the control skeletons look like, in numbers, on the closed demo
+// meshes that are characters or animals and on three synthetic shapes (a thin plate, a
+// winged body, a T-pose figure: test/include/Geodesic_skeleton_test/characters.h), at
+// several resolutions. Per mesh and resolution, one run of extract_control_skeleton():
+//   - end points and junctions: joints of degree 1 and of degree >= 3 (the degree counts
+//     the bones and the cut bones at a joint); joints; bones (cut bones included);
+//   - joints per chain: the joints of degree 2 over the chains (maximal paths of bones
+//     between joints of degree != 2; a cycle of degree-2 joints is one chain);
+//   - curve points: the vertices of the curve skeleton (pruned, smoothed); points outside:
+//     those outside the mesh (CGAL::Side_of_triangle_mesh; outside every connected
+//     component, as the voxelizer fills each closed piece; "-" for an open mesh); max
+//     outside: the largest distance from one of them to the surface (AABB tree), in % of
+//     the diagonal of the mesh's bounding box.
+// Then the resolution stability: joints at each resolution, and joints at the last
+// resolution over joints at 64 (or at the first, without 64), flagged "*" outside
+// [0.75, 1.25].
+//
+//   quality_benchmark [DATA_DIR] [--meshes a,b,c] [--resolutions 48,64,96,128] [--write-shapes DIR]
+//
+// --write-shapes DIR writes the synthetic shapes to DIR/plate.off, DIR/winged_body.off and
+// DIR/t_pose_figure.off (to look at them with skeletonize) and stops.
+
+#include <CGAL/Geodesic_skeleton/extract_control_skeleton.h>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <Geodesic_skeleton_test/characters.h>
+
+#include "benchmark_common.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gs = CGAL::Geodesic_skeleton;
+namespace params = CGAL::Geodesic_skeleton::parameters;
+namespace shapes = Geodesic_skeleton_test;
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+using Control = gs::Control_skeleton<Point>;
+using Curve = gs::Curve_skeleton<Point, boost::graph_traits<Mesh>::vertex_descriptor>;
+
+using benchmark_common::median;
+using benchmark_common::split_commas;
+
+namespace {
+
+struct Options
+{
+  std::string data_dir = GEODESIC_SKELETON_DATA_DIR;
+  std::vector<std::string> names = {"cow", "elephant", "dino",  "camel",   "horse",       "armadillo",    "man",
+                                    "bunny", "hand",   "octopus", "plate", "winged_body", "t_pose_figure"};
+  std::vector<int> resolutions = {48, 64, 96, 128};
+  std::string shapes_dir; // --write-shapes
+};
+
+// Reads [DATA_DIR] [--meshes a,b] [--resolutions 48,64] [--write-shapes DIR]; prints the
+// usage and returns false on anything else.
+bool parse_options(int argc, char* argv[], Options& o)
+{
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if(arg == "--meshes" && i + 1 < argc)
+      o.names = split_commas(argv[++i]);
+    else if(arg == "--resolutions" && i + 1 < argc)
+    {
+      o.resolutions.clear();
+      for(const std::string& r : split_commas(argv[++i]))
+        o.resolutions.push_back(std::atoi(r.c_str()));
+    }
+    else if(arg == "--write-shapes" && i + 1 < argc)
+      o.shapes_dir = argv[++i];
+    else if(!arg.empty() && arg[0] != '-')
+      o.data_dir = arg;
+    else
+    {
+      std::cout << "usage: " << argv[0]
+                << " [DATA_DIR] [--meshes a,b,c] [--resolutions 48,64,96,128] [--write-shapes DIR]\n";
+      return false;
+    }
+  }
+  return !o.resolutions.empty();
+}
+
+// The synthetic shapes of characters.h, by name.
+const std::map<std::string, shapes::Soup (*)()> synthetic_shapes = {
+    {"plate", shapes::plate}, {"winged_body", shapes::winged_body}, {"t_pose_figure", shapes::t_pose_figure}};
+
+// A synthetic shape, or DATA_DIR/NAME.off; nothing when neither exists.
+std::optional<Mesh> load_mesh(const std::string& name, const std::string& data_dir)
+{
+  if(auto shape = synthetic_shapes.find(name); shape != synthetic_shapes.end())
+    return shapes::mesh_of<Mesh>(shape->second());
+  Mesh mesh;
+  if(!CGAL::IO::read_polygon_mesh(data_dir + "/" + name + ".off", mesh) || num_faces(mesh) == 0)
+    return std::nullopt;
+  return mesh;
+}
+
+struct Joint_counts
+{
+  std::size_t end_points = 0, junctions = 0, joints = 0, bones = 0;
+  double joints_per_chain = 0;
+};
+
+// The joints by degree, and the chains: each walk from a joint of degree != 2 along an
+// unwalked bone, through joints of degree 2, is one chain; the bones left unwalked after
+// that form cycles of degree-2 joints, one chain each.
+Joint_counts count_joints(const Control& control)
+{
+  std::vector<const gs::Control_bone<Point>*> bones;
+  for(const auto* list : {&control.bones, &control.cut_bones})
+    for(const auto& bone : *list)
+      bones.push_back(&bone);
+  std::vector<std::vector<std::size_t>> bones_at(control.joints.size());
+  for(std::size_t b = 0; b < bones.size(); ++b)
+  {
+    bones_at[bones[b]->parent].push_back(b);
+    bones_at[bones[b]->child].push_back(b);
+  }
+  Joint_counts c;
+  c.joints = control.joints.size();
+  c.bones = bones.size();
+  std::size_t middle_joints = 0;
+  for(const auto& at : bones_at)
+  {
+    c.end_points += at.size() == 1;
+    c.junctions += at.size() >= 3;
+    middle_joints += at.size() == 2;
+  }
+  std::vector<bool> walked(bones.size(), false);
+  auto walk = [&](std::size_t joint, std::size_t bone) {
+    while(!walked[bone])
+    {
+      walked[bone] = true;
+      joint = bones[bone]->parent == joint ? bones[bone]->child : bones[bone]->parent;
+      if(bones_at[joint].size() != 2)
+        break;
+      bone = bones_at[joint][0] == bone ? bones_at[joint][1] : bones_at[joint][0];
+    }
+  };
+  std::size_t chains = 0;
+  for(std::size_t j = 0; j < bones_at.size(); ++j)
+    if(bones_at[j].size() != 2)
+      for(std::size_t b : bones_at[j])
+        if(!walked[b])
+        {
+          walk(j, b);
+          ++chains;
+        }
+  for(std::size_t b = 0; b < bones.size(); ++b)
+    if(!walked[b])
+    {
+      walk(bones[b]->parent, b);
+      ++chains;
+    }
+  c.joints_per_chain = chains > 0 ? double(middle_joints) / double(chains) : 0.0;
+  return c;
+}
+
+double bounding_box_diagonal(const Mesh& mesh)
+{
+  const CGAL::Bbox_3 b = CGAL::Polygon_mesh_processing::bbox(mesh);
+  return std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) +
+                   CGAL::square(b.zmax() - b.zmin()));
+}
+
+// The inside of a closed mesh as the voxelizer sees it: inside any of its connected
+// components (overlapping pieces of a character are each filled), and the distance to its
+// surface.
+class Mesh_inside
+{
+public:
+  explicit Mesh_inside(const Mesh& mesh) : tree_(faces(mesh).first, faces(mesh).second, mesh)
+  {
+    CGAL::Polygon_mesh_processing::split_connected_components(mesh, pieces_);
+    for(const Mesh& piece : pieces_)
+      sides_.push_back(std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, Kernel>>(piece));
+  }
+  bool outside(const Point& p) const
+  {
+    return std::all_of(sides_.begin(), sides_.end(),
+                       [&](const auto& side) { return (*side)(p) == CGAL::ON_UNBOUNDED_SIDE; });
+  }
+  double distance_to_surface(const Point& p) const { return std::sqrt(tree_.squared_distance(p)); }
+
+private:
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
+  std::vector<Mesh> pieces_;
+  std::vector<std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, Kernel>>> sides_;
+  Tree tree_;
+};
+
+struct Points_outside
+{
+  std::size_t count = 0;
+  double max_distance = 0; // world units
+};
+
+// The curve-skeleton points outside the mesh, and the farthest one's distance to it.
+Points_outside curve_points_outside(const Mesh_inside& inside, const Curve& curve)
+{
+  Points_outside out;
+  for(auto v : CGAL::make_range(vertices(curve)))
+    if(inside.outside(curve[v].point))
+    {
+      ++out.count;
+      out.max_distance = std::max(out.max_distance, inside.distance_to_surface(curve[v].point));
+    }
+  return out;
+}
+
+// One row of the quality table for `mesh` at `resolution`; returns the joints (0 when the
+// chain failed).
+std::size_t print_quality_row(const std::string& name, const Mesh& mesh, const Mesh_inside* inside, int resolution)
+{
+  std::cout << "| " << name << " | " << resolution << " | ";
+  Control control;
+  Curve curve;
+  try
+  {
+    gs::extract_control_skeleton(mesh, control,
+                                 params::combine(params::resolution(resolution), params::curve_skeleton_output(&curve)));
+  }
+  catch(const std::exception& e)
+  {
+    std::cout << "failed: " << e.what() << " | | | | | | | |\n";
+    return 0;
+  }
+  const Joint_counts c = count_joints(control);
+  std::cout << c.end_points << " | " << c.junctions << " | " << c.joints << " | " << c.bones << " | "
+            << c.joints_per_chain << " | " << num_vertices(curve) << " | ";
+  if(inside == nullptr)
+    std::cout << "- | - |\n";
+  else
+  {
+    const Points_outside out = curve_points_outside(*inside, curve);
+    std::cout << out.count << " | " << 100 * out.max_distance / bounding_box_diagonal(mesh) << " |\n";
+  }
+  return c.joints;
+}
+
+// The resolution-stability table: joints per resolution, and joints at the last resolution
+// over joints at 64 (or at the first), flagged outside [0.75, 1.25]; then their median.
+void print_stability_table(const std::vector<std::pair<std::string, std::vector<std::size_t>>>& joints,
+                           const std::vector<int>& resolutions)
+{
+  const auto at_64 = std::find(resolutions.begin(), resolutions.end(), 64);
+  const std::size_t reference = at_64 == resolutions.end() ? 0 : std::size_t(at_64 - resolutions.begin());
+  std::cout << "\nresolution stability\n\n| mesh |";
+  for(int r : resolutions)
+    std::cout << " joints at " << r << " |";
+  std::cout << " " << resolutions.back() << "/" << resolutions[reference] << " |\n|---|";
+  for(std::size_t k = 0; k <= resolutions.size(); ++k)
+    std::cout << "---:|";
+  std::cout << "\n";
+  std::vector<double> ratios;
+  std::size_t flagged = 0;
+  for(const auto& [name, counts] : joints)
+  {
+    std::cout << "| " << name << " |";
+    for(std::size_t n : counts)
+      std::cout << " " << n << " |";
+    if(counts[reference] == 0 || counts.back() == 0)
+    {
+      std::cout << " - |\n";
+      continue;
+    }
+    const double ratio = double(counts.back()) / double(counts[reference]);
+    const bool flag = ratio < 0.75 || ratio > 1.25;
+    ratios.push_back(ratio);
+    flagged += flag;
+    std::cout << " " << ratio << (flag ? " *" : "") << " |\n";
+  }
+  if(!ratios.empty())
+    std::cout << "\nmedian ratio " << median(ratios) << ", flagged " << flagged << " of " << ratios.size()
+              << " meshes\n";
+}
+
+// Writes the synthetic shapes to DIR/NAME.off.
+bool write_shapes(const std::string& dir)
+{
+  for(const auto& [name, build] : synthetic_shapes)
+  {
+    const std::string path = dir + "/" + name + ".off";
+    Mesh mesh = shapes::mesh_of<Mesh>(build());
+    if(!CGAL::IO::write_polygon_mesh(path, mesh, CGAL::parameters::stream_precision(10)))
+    {
+      std::cerr << "cannot write " << path << "\n";
+      return false;
+    }
+    std::cout << "wrote " << path << "\n";
+  }
+  return true;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  Options options;
+  if(!parse_options(argc, argv, options))
+    return 2;
+  if(!options.shapes_dir.empty())
+    return write_shapes(options.shapes_dir) ? 0 : 1;
+
+  std::cout << std::fixed << std::setprecision(2);
+  std::cout << "| mesh | resolution | end points | junctions | joints | bones | joints per chain | curve points"
+               " | points outside | max outside (% of diagonal) |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  std::vector<std::pair<std::string, std::vector<std::size_t>>> joints;
+  for(const std::string& name : options.names)
+  {
+    const std::optional<Mesh> mesh = load_mesh(name, options.data_dir);
+    if(!mesh)
+    {
+      std::cerr << "note: no mesh " << options.data_dir << "/" << name << ".off, skipped\n";
+      continue;
+    }
+    std::optional<Mesh_inside> inside;
+    if(CGAL::is_closed(*mesh))
+      inside.emplace(*mesh);
+    joints.emplace_back(name, std::vector<std::size_t>());
+    for(int resolution : options.resolutions)
+      joints.back().second.push_back(print_quality_row(name, *mesh, inside ? &*inside : nullptr, resolution));
+  }
+  print_stability_table(joints, options.resolutions);
+  return 0;
+}
