@@ -114,7 +114,7 @@ int main(int argc, char* argv[])
   // Where our time goes: the median over the timed runs of each stage's time.
   const std::vector<std::string> stages = {"voxelize", "distance_transform", "thin", "thinned_graph",
                                            "remove_small_pieces", "cut_spurious_cycles", "prune", "to_graph",
-                                           "smooth", "split_into_bones", "joints_inside"};
+                                           "smooth", "curve_points_inside", "split_into_bones"};
   std::ostringstream stage_table;
   stage_table << "\n| mesh |";
   for(const std::string& stage : stages)

@@ -525,7 +525,9 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
                    {"small_pieces_removed", report.small_pieces.removed_pieces}}},
         {"thinned", stage_json(report.thinned)},
         {"spurious_cycles", {{"cut", report.spurious_cycles_cut}}},
-        {"pruned", stage_json(report.pruned)}};
+        {"pruned", stage_json(report.pruned)},
+        {"inside", {{"curve_points_moved", report.curve_points_moved_inside},
+                    {"joints_moved", report.joints_moved_inside}}}};
     nlohmann::json computed = {"curve_skeleton", "control_skeleton"};
     if(o.reeb_graph)
     {

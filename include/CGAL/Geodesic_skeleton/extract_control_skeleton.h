@@ -54,13 +54,14 @@ struct Control_skeleton_report
   std::size_t spurious_cycles_cut = 0; ///< cycles the mesh has no handle for, opened (`cut_spurious_cycles()`)
   Skeleton_statistics pruned;      ///< after pruning (Algorithm 1 and snipping)
   Pruning_report pruning;          ///< what pruning removed
-  std::size_t joints_moved_inside = 0; ///< joints that lay outside the (closed) mesh and were moved in
+  std::size_t curve_points_moved_inside = 0; ///< curve-skeleton points that lay outside the (closed) mesh and were moved in
+  std::size_t joints_moved_inside = 0; ///< joints on those points: they moved in with them
   std::size_t reeb_nodes = 0;      ///< nodes of the Reeb graph, when one was asked for
   std::size_t reeb_edges = 0;      ///< arcs of the Reeb graph, when one was asked for
   /// Wall-clock time of each stage in milliseconds, in the order they ran: "voxelize",
   /// "distance_transform", "thin", "thinned_graph" (the graph and counts of the thinned
   /// skeleton), "remove_small_pieces", "cut_spurious_cycles", "prune", "to_graph", "smooth",
-  /// "split_into_bones", "joints_inside", and "reeb_graph" when asked for.
+  /// "curve_points_inside", "split_into_bones", and "reeb_graph" when asked for.
   std::vector<std::pair<std::string, double>> timings_ms;
   double total_ms = 0;             ///< the whole call, in milliseconds
 };
@@ -176,6 +177,14 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 /// opens the cycles of the skeleton that the mesh has no handle for (where parts come
 /// within a voxel of each other, the solid joins them).
 ///
+/// Between `smooth_skeleton()` and `split_into_bones()`, when the mesh is a closed triangle
+/// mesh, a point of the curve skeleton that lies outside it (smoothing averages the points
+/// along the bends of the skeleton, which in a limb a few voxels thin can take one out)
+/// moves to the nearest point of the surface and a quarter voxel further in, so that every
+/// point of the curve skeleton is inside the mesh, and with them every joint and every
+/// point of the bones, which are curve-skeleton points. An open mesh has no inside to
+/// test, and its points stay where the skeleton puts them.
+///
 /// The result is in the mesh's own coordinates and does not change (beyond the rounding
 /// of coordinates) when the mesh is rotated or moved, since the grid follows the mesh's
 /// principal axes.
@@ -196,7 +205,8 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 ///     pointer or a reference.
 ///   - `curve_skeleton_output` (package parameter): a pointer to a
 ///     `Curve_skeleton<Point, vertex_descriptor>` that receives the pruned, smoothed curve
-///     skeleton, with the mesh vertices mapped to its vertices (default: none). For this
+///     skeleton (its points moved inside a closed mesh, as above), with the mesh vertices
+///     mapped to its vertices (default: none). For this
 ///     output and the next two, a null pointer is the same as none.
 ///   - `thinned_skeleton_output` (package parameter): a pointer to a
 ///     `Curve_skeleton<Point, vertex_descriptor>` that receives the skeleton straight
@@ -207,12 +217,6 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 ///     none, and no Reeb graph is computed).
 ///   - `number_of_reeb_intervals` (package parameter): intervals of that Reeb graph
 ///     (default: 30).
-///
-/// Last, when the mesh is a closed triangle mesh, a joint that lies outside it (in a limb
-/// thinner than a couple of voxels, the skeleton can pass up to about half a voxel out)
-/// moves to the nearest point of the surface and a quarter voxel further in, so that every
-/// joint is inside the mesh; the bones' ends follow. An open mesh has no inside to test,
-/// and its joints stay where the skeleton puts them.
 ///
 /// \returns the sizes and timings of the stages.
 /// \throws std::invalid_argument for bad input or parameters, with a message naming the
@@ -290,17 +294,20 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   Skeleton curve;
   internal::to_graph_impl(skeleton, distances, mesh, curve, vpm, memory_limit, mesh_lines);
   report.pruned = skeleton_statistics(curve);
-  grid_lines.reset(); // as large as the mesh: freed before the joints' inside test reads it
+  grid_lines.reset(); // as large as the mesh: freed before the curve points' inside test reads it
   clock.finished("to_graph");
 
   smooth_skeleton(curve, np);
   clock.finished("smooth");
 
+  const std::vector<std::size_t> moved_inside =
+      internal::move_curve_points_inside(mesh, vpm, curve, 0.25 * report.voxel_size);
+  report.curve_points_moved_inside = moved_inside.size();
+  clock.finished("curve_points_inside");
+
   split_into_bones(curve, out, np);
+  report.joints_moved_inside = internal::joints_on_vertices(out, moved_inside);
   clock.finished("split_into_bones");
-  report.joints_moved_inside =
-      internal::move_joints_inside(mesh, vpm, out, 0.25 * report.voxel_size, 2 * report.voxel_size);
-  clock.finished("joints_inside");
   if(Skeleton* curve_output = internal::output_pointer<Skeleton>(np, internal_np::curve_skeleton_output_tag))
     *curve_output = std::move(curve);
 

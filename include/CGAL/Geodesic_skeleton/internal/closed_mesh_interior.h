@@ -8,8 +8,10 @@
 #include <CGAL/Geodesic_skeleton/internal/mesh_triangles.h>
 #include <CGAL/Geodesic_skeleton/internal/principal_frame.h>
 #include <CGAL/Geodesic_skeleton/internal/triangle_box_overlap.h>
+#include <CGAL/Geodesic_skeleton/internal/vertex_components.h>
 
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
@@ -66,29 +68,52 @@ inline const std::array<Vec3, 5>& ray_directions()
   return directions;
 }
 
-// Ray parity against a closed triangle soup: odd crossings along a ray means inside. Rays
-// go along the axes first, so that a triangle whose box misses the ray's line is skipped
-// with a few comparisons. A ray that passes too
-// near an edge or a vertex of a triangle is dropped and another direction tried, from
+// The pieces of a closed triangle soup (its connected components) that a ray has crossed
+// an odd number of times so far: its origin is inside the pieces left, by ray parity.
+// Parity is taken piece by piece, so that where two closed pieces overlap (a character's
+// parts, a self-intersecting union), which voxelize() fills, the point is inside, not
+// outside as the parity of all the crossings would say.
+class Odd_pieces
+{
+public:
+  void cross(std::size_t piece)
+  {
+    const auto i = std::find(m_odd.begin(), m_odd.end(), piece);
+    if(i == m_odd.end())
+      m_odd.push_back(piece);
+    else
+      m_odd.erase(i);
+  }
+  bool inside_some_piece() const { return !m_odd.empty(); }
+
+private:
+  std::vector<std::size_t> m_odd; // few: the pieces overlapping at one point
+};
+
+// Whether p is inside one of the closed pieces of a triangle soup (`piece_of` each triangle),
+// by ray parity (Odd_pieces). Rays go along the axes first, so that a triangle whose box
+// misses the ray's line is skipped with a few comparisons. A ray that passes too near an
+// edge or a vertex of a triangle is dropped and another direction tried, from
 // `first_direction` on. Costs O(F) per query: meant for the few points in doubt.
 inline bool is_inside_closed_soup(const Vec3& p, const std::vector<Triangle3>& triangles,
-                                  int first_direction = 0)
+                                  const std::vector<std::size_t>& piece_of, int first_direction = 0)
 {
   for(int axis = first_direction; axis < 5; ++axis)
   {
     const Vec3& d = ray_directions()[std::size_t(axis)];
     bool ambiguous = false;
-    std::size_t crossings = 0;
+    Odd_pieces odd;
     for(std::size_t i = 0; i < triangles.size() && !ambiguous; ++i)
     {
       if(axis < 3 && !box_meets_axis_ray(p, axis, Triangle_box(triangles[i])))
         continue;
       const Ray_meets meets = ray_meets_triangle(p, d, triangles[i]);
       ambiguous = meets == Ray_meets::unclear;
-      crossings += meets == Ray_meets::once;
+      if(meets == Ray_meets::once)
+        odd.cross(piece_of[i]);
     }
     if(!ambiguous)
-      return crossings % 2 == 1;
+      return odd.inside_some_piece();
   }
   return false;
 }
@@ -125,19 +150,24 @@ inline Vec3 closest_point_on_triangle(const Vec3& p, const Triangle3& t)
   return Vec3{t[0][0] + ab[0] * v + ac[0] * w, t[0][1] + ab[1] * v + ac[1] * w, t[0][2] + ab[2] * v + ac[2] * w};
 }
 
-// The triangles of a closed triangle mesh, to ask whether points are inside it and to move
-// the ones outside just in. Empty (and every answer "leave it") for a mesh that is not a
-// closed triangle mesh: it has no inside to test.
+// The triangles of a closed triangle mesh and the piece (connected component) of each, to
+// ask whether points are inside it and to move the ones outside just in. Empty (and every
+// answer "leave it") for a mesh that is not a closed triangle mesh: it has no inside to test.
 class Closed_mesh_interior
 {
 public:
-  // `face_triangles` are the faces of `mesh`, in world coordinates (mesh_triangles()).
+  // `face_triangles` are the faces of `mesh`, in world coordinates, in the order of
+  // faces(mesh) (mesh_triangles()).
   template <typename TriangleMesh>
   Closed_mesh_interior(const TriangleMesh& mesh, std::vector<Triangle3> face_triangles)
   {
     if(!CGAL::is_closed(mesh) || !CGAL::is_triangle_mesh(mesh))
       return;
     m_triangles = std::move(face_triangles);
+    const auto vim = CGAL::get_initialized_vertex_index_map(mesh);
+    const Vertex_components pieces = vertex_components(mesh, vim);
+    for(auto f : faces(mesh))
+      m_piece_of.push_back(pieces.component_of[std::size_t(get(vim, target(halfedge(f, mesh), mesh)))]);
   }
 
   bool has_interior() const { return !m_triangles.empty(); }
@@ -151,7 +181,7 @@ public:
     for(std::size_t k = 0; k < points.size(); ++k)
       by_y[k] = k;
     std::sort(by_y.begin(), by_y.end(), [&](std::size_t a, std::size_t b) { return points[a][1] < points[b][1]; });
-    std::vector<std::size_t> crossings(points.size(), 0);
+    std::vector<Odd_pieces> odd(points.size());
     std::vector<bool> unclear(points.size(), false);
     for(std::size_t i = 0; i < m_triangles.size(); ++i)
     {
@@ -164,12 +194,13 @@ public:
           continue;
         const Ray_meets meets = ray_meets_triangle(points[*k], ray_directions()[0], m_triangles[i]);
         unclear[*k] = meets == Ray_meets::unclear;
-        crossings[*k] += meets == Ray_meets::once;
+        if(meets == Ray_meets::once)
+          odd[*k].cross(m_piece_of[i]);
       }
     }
     std::vector<bool> in(points.size());
     for(std::size_t k = 0; k < points.size(); ++k)
-      in[k] = unclear[k] ? is_inside_closed_soup(points[k], m_triangles, 1) : crossings[k] % 2 == 1;
+      in[k] = unclear[k] ? is_inside_closed_soup(points[k], m_triangles, m_piece_of, 1) : odd[k].inside_some_piece();
     return in;
   }
 
@@ -200,7 +231,7 @@ public:
     {
       const Vec3 candidate{nearest[0] + step * in[0] / length, nearest[1] + step * in[1] / length,
                            nearest[2] + step * in[2] / length};
-      if(is_inside_closed_soup(candidate, m_triangles))
+      if(is_inside_closed_soup(candidate, m_triangles, m_piece_of))
       {
         p = candidate;
         return true;
@@ -211,54 +242,55 @@ public:
 
 private:
   std::vector<Triangle3> m_triangles;
+  std::vector<std::size_t> m_piece_of; // by triangle
 };
 
-// Moves every joint that lies outside a closed triangle mesh (a limb thinner than a couple
-// of voxels can put one up to about half a voxel out) just inside it (see
-// Closed_mesh_interior::move_inside). Only joints of medial radius under `deep_radius` are
-// in doubt: a deeper one sits inside. The bones' end points follow their joints. Returns
-// how many joints moved.
+// Moves every point of a curve skeleton that lies outside a closed triangle mesh just
+// inside it (see Closed_mesh_interior::move_inside): to_graph() puts the points inside,
+// but smoothing averages them along the bends of the skeleton, which in a limb a few
+// voxels thin can take them out (up to 1.6 % of the diagonal). Every point is tested,
+// not only the thin ones: the medial radius is that of the voxel solid, which the voxels
+// the surface touches make thicker than the mesh, and points of 2 to 3.3 voxels' radius
+// come out too (cow and camel at resolutions 96 and 128, man at 48 to 96). The joints and
+// the bones' points are the curve's points (split_into_bones()), so moving the points
+// before the split puts them inside too. Returns the vertices moved, in increasing order.
 //
-// The faces of `mesh` are read (mesh_triangles()) only when a joint is in doubt.
-//
-// Complexity: O(F log D + C) for D doubtful joints, F faces and C pairs of a joint and a
-// face that its ray along x may cross, plus O(F) for each joint moved (limb tips).
-template <typename TriangleMesh, typename VertexPointMap, typename Point>
-std::size_t move_joints_inside(const TriangleMesh& mesh, VertexPointMap vpm, Control_skeleton<Point>& control,
-                               double depth, double deep_radius)
+// Complexity: O(F log N + C) for N points, F faces and C pairs of a point and a face that
+// its ray along x may cross, plus O(F) for each point moved.
+template <typename TriangleMesh, typename VertexPointMap, typename CurveSkeleton>
+std::vector<std::size_t> move_curve_points_inside(const TriangleMesh& mesh, VertexPointMap vpm,
+                                                  CurveSkeleton& skeleton, double depth)
 {
-  const bool doubt = std::any_of(control.joints.begin(), control.joints.end(),
-                                 [&](const Control_joint<Point>& j) { return j.radius < deep_radius; });
-  if(!doubt || !CGAL::is_closed(mesh) || !CGAL::is_triangle_mesh(mesh))
-    return 0;
+  using Point = decltype(skeleton[0].point);
+  const std::size_t n = num_vertices(skeleton);
+  if(n == 0 || !CGAL::is_closed(mesh) || !CGAL::is_triangle_mesh(mesh))
+    return {};
+  std::vector<Vec3> points(n);
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    const Point& q = skeleton[v].point;
+    points[v] = Vec3{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())};
+  }
   const Closed_mesh_interior interior(mesh, mesh_triangles(mesh, vpm, "extract_control_skeleton"));
-  if(!interior.has_interior())
-    return 0;
-  std::vector<std::size_t> doubtful;
-  std::vector<Vec3> points;
-  for(std::size_t j = 0; j < control.joints.size(); ++j)
-    if(control.joints[j].radius < deep_radius)
-    {
-      const Point& q = control.joints[j].point;
-      doubtful.push_back(j);
-      points.push_back(Vec3{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())});
-    }
   const std::vector<bool> inside = interior.inside(points);
-  std::size_t moved = 0;
-  for(std::size_t k = 0; k < doubtful.size(); ++k)
-    if(!inside[k] && interior.move_inside(points[k], depth))
+  std::vector<std::size_t> moved;
+  for(std::size_t v = 0; v < n; ++v)
+    if(!inside[v] && interior.move_inside(points[v], depth))
     {
-      control.joints[doubtful[k]].point = Point(points[k][0], points[k][1], points[k][2]);
-      ++moved;
+      skeleton[v].point = Point(points[v][0], points[v][1], points[v][2]);
+      moved.push_back(v);
     }
-  if(moved > 0)
-    for(auto* bones : {&control.bones, &control.cut_bones})
-      for(Control_bone<Point>& bone : *bones)
-      {
-        bone.points.front() = control.joints[bone.parent].point;
-        bone.points.back() = control.joints[bone.child].point;
-      }
   return moved;
+}
+
+// How many joints sit on the curve-skeleton vertices `moved` (sorted): the joints that
+// move_curve_points_inside() took inside with their points.
+template <typename Point>
+std::size_t joints_on_vertices(const Control_skeleton<Point>& control, const std::vector<std::size_t>& moved)
+{
+  return std::size_t(std::count_if(control.joints.begin(), control.joints.end(), [&](const Control_joint<Point>& j) {
+    return std::binary_search(moved.begin(), moved.end(), j.skeleton_vertex);
+  }));
 }
 
 } // namespace internal
