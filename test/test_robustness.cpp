@@ -526,11 +526,15 @@ BOOST_AUTO_TEST_CASE(the_stages_check_their_own_parameters)
 BOOST_AUTO_TEST_CASE(the_ends_of_the_ranges)
 {
   const Mesh mesh = test::mesh_of<Mesh>(box_soup(bar));
-  // The lowest resolution: a bar one voxel thick encloses no voxel (a clear error that says
-  // to raise the resolution); a ball four voxels across gives a skeleton inside it.
+  // The lowest resolution: a bar one voxel thick, whose surface touches all its voxels but
+  // encloses their centres, gives a skeleton inside it (a line of up to four points); a
+  // ball four voxels across gives one inside it too.
   Control c;
-  BOOST_TEST(throws_naming<std::invalid_argument>([&] { gs::extract_control_skeleton(mesh, c, params::resolution(4)); },
-                                                  {"encloses no volume at resolution 4", "raise the resolution"}));
+  gs::extract_control_skeleton(mesh, c, params::resolution(4));
+  BOOST_TEST(!c.joints.empty());
+  BOOST_TEST(c.joints.size() <= 4u);
+  for(const auto& j : c.joints)
+    BOOST_TEST(inside_boxes({bar}, 1e-9)(j.point));
   const Mesh ball = test::mesh_of<Mesh>(test::icosphere(1, 2));
   gs::extract_control_skeleton(ball, c, params::resolution(4));
   BOOST_TEST(!c.joints.empty());

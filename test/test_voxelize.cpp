@@ -3,6 +3,7 @@
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
 #include <CGAL/Geodesic_skeleton/voxelize.h>
 
+#include <Geodesic_skeleton_test/characters.h>
 #include <Geodesic_skeleton_test/shapes.h>
 #include <Geodesic_skeleton_test/voxel_skeleton.h>
 
@@ -161,6 +162,30 @@ BOOST_AUTO_TEST_CASE(holes_are_closed)
   gs::Sparse_voxel_set open;
   BOOST_CHECK_THROW(gs::voxelize(mesh_of(test::cylinder(1., 6., 32, 40, false)), open,
                                  gs::parameters::fill_holes(false)),
+                    std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(a_closed_plate_under_two_voxels_thick_is_solid)
+{
+  // The plate (1.0 x 0.6, 0.03 thick) is 1.4 to 1.9 voxels thick at these resolutions: its
+  // surface touches every voxel it covers, so no voxel is left untouched inside, yet the
+  // centres of those voxels are inside it: a solid, one or two voxels thick, over the
+  // plate's whole outline (about 0.53 of the bounding rectangle, at least 0.4 of it per
+  // layer), not the error of an open sheet.
+  const Mesh plate = mesh_of(test::plate());
+  for(int resolution : {48, 64})
+  {
+    gs::Dense_voxel_grid s;
+    const std::size_t n = gs::voxelize(plate, s, gs::parameters::resolution(resolution));
+    const double cells_of_outline = 0.94 * resolution * 0.6 * resolution; // rounded rectangle
+    BOOST_TEST(double(n) >= 0.8 * cells_of_outline, "resolution " << resolution << ": " << n << " voxels");
+    BOOST_TEST(double(n) <= 3.0 * cells_of_outline, "resolution " << resolution << ": " << n << " voxels");
+  }
+  // An open tube whose holes stay open still encloses nothing: the flood fills its hollow,
+  // which the lines across it count inside.
+  gs::Dense_voxel_grid open;
+  BOOST_CHECK_THROW(gs::voxelize(mesh_of(test::cylinder(0.05, 1., 32, 40, false)), open,
+                                 gs::parameters::combine(gs::parameters::resolution(48), gs::parameters::fill_holes(false))),
                     std::invalid_argument);
 }
 

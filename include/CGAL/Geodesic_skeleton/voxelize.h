@@ -222,7 +222,10 @@ std::size_t voxelize_impl(const FaceGraph& mesh, VoxelSet& voxels, const NamedPa
       enclosed += labels[i] == internal::EMPTY;
     }
   });
-  if(enclosed == 0)
+  // A closed shape under about two voxels thick (a plate, a wing) leaves no voxel
+  // untouched by its surface: it still encloses volume when the centres of touched voxels
+  // are inside it.
+  if(enclosed == 0 && !internal::thin_closed_surface_encloses_centres(grid_triangles, layout, labels))
   {
     std::ostringstream msg;
     msg << caller << ": the mesh encloses no volume at resolution " << resolution
@@ -354,7 +357,11 @@ std::size_t voxelize_impl(const FaceGraph& mesh, VoxelSet& voxels, const NamedPa
 /// \throws std::invalid_argument for an empty mesh (no face), a non-finite coordinate, a
 ///      mesh of zero area, a resolution out of range, or a mesh that encloses no voxel at
 ///      all (an open sheet, or a shape thinner than a voxel: raise the resolution or close
-///      the mesh).
+///      the mesh). A closed shape whose surface touches all its voxels (a plate under
+///      about two voxels thick) is not such a mesh when it encloses the centres of some of
+///      them, counted by winding numbers along grid lines in the three directions, and the
+///      outside flood reached no centre that it encloses (as it does through the openings
+///      of an open tube): its solid is the voxels it touches.
 /// \throws std::length_error when the grid would need more memory than `memory_limit`
 ///      (the message names the bytes needed).
 ///

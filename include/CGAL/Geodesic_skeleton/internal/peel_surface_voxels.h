@@ -131,6 +131,45 @@ inline bool vote_along_lines(const std::vector<std::array<Vec3, 3>>& g, int axis
   return all_trusted;
 }
 
+// The votes of every voxel neither OUTSIDE nor FAN on whether its centre is inside the
+// mesh (vote_along_lines(): "inside" in bits 0-1, "outside" in bits 2-3), along x, and
+// along y and z when an x line abstains.
+inline std::vector<std::uint8_t> centre_votes(const std::vector<std::array<Vec3, 3>>& g, const Grid_layout& layout,
+                                              const std::vector<std::uint8_t>& labels)
+{
+  std::vector<std::uint8_t> votes(layout.volume(), 0);
+  if(!vote_along_lines(g, 0, layout, labels, votes))
+    for(int axis = 1; axis < 3; ++axis)
+      vote_along_lines(g, axis, layout, labels, votes);
+  return votes;
+}
+
+// Whether the surface encloses the centre of some voxel it touches (more "inside" than
+// "outside" votes) while the flood found no centre inside it: a closed mesh thinner than
+// about two voxels (a plate, a wing), all of whose voxels its surface touches, does; an open
+// sheet does not, nor an open tube, whose hollow the flood filled through its openings
+// although the lines across it count it inside.
+inline bool thin_closed_surface_encloses_centres(const std::vector<std::array<Vec3, 3>>& g,
+                                                 const Grid_layout& layout, const std::vector<std::uint8_t>& labels)
+{
+  std::vector<std::uint8_t> voting = labels; // the flooded voxels voted on too
+  std::replace(voting.begin(), voting.end(), std::uint8_t(OUTSIDE), std::uint8_t(EMPTY));
+  // Lines along all three axes: a leak may show across a hollow only (an open tube's
+  // lines along its axis cross nothing).
+  std::vector<std::uint8_t> votes(layout.volume(), 0);
+  for(int axis = 0; axis < 3; ++axis)
+    vote_along_lines(g, axis, layout, voting, votes);
+  bool surface_centre_inside = false;
+  for(std::size_t i = 0; i < votes.size(); ++i)
+    if((votes[i] & 3) > (votes[i] >> 2))
+    {
+      if(labels[i] == OUTSIDE)
+        return false; // the flood reached a centre that the surface encloses: it leaks
+      surface_centre_inside = surface_centre_inside || labels[i] == SURFACE;
+    }
+  return surface_centre_inside;
+}
+
 // The local tests of the peeling are those of the simple-point test
 // (internal/simple_point.h): Simple_point_test::background_is_one_piece() (T6 = 1: no
 // cavity or tunnel opened) and Simple_point_test::object_is_split() (T26 >= 2). Removals
@@ -162,10 +201,7 @@ inline void peel_surface_voxels(const std::vector<std::array<Vec3, 3>>& g, const
   // The margin of the grid is OUTSIDE, so neighbours of non-OUTSIDE voxels are in the box.
 
   // 1. Votes.
-  std::vector<std::uint8_t> votes(volume, 0);
-  if(!vote_along_lines(g, 0, layout, labels, votes))
-    for(int axis = 1; axis < 3; ++axis)
-      vote_along_lines(g, axis, layout, labels, votes);
+  std::vector<std::uint8_t> votes = centre_votes(g, layout, labels);
   std::vector<std::uint32_t> candidates;
   for(std::size_t i = 0; i < volume; ++i)
   {
