@@ -8,5 +8,3 @@ include(CGAL_Eigen3_support)
 if(NOT TARGET CGAL::Eigen3_support)
   message(FATAL_ERROR "Geodesic_skeleton needs Eigen3 (Debian: libeigen3-dev)")
 endif()
-# JSON output of skeletons (CGAL/Geodesic_skeleton/IO/json.h). Debian: nlohmann-json3-dev.
-find_package(nlohmann_json 3.2 REQUIRED)

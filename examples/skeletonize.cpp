@@ -11,6 +11,7 @@
 #include "skeletonize_formats.h"
 
 #include <CGAL/Geodesic_skeleton.h>
+#include <CGAL/Geodesic_skeleton/IO/json.h>
 #include <CGAL/Geodesic_skeleton/IO/read_control_skeleton_json.h>
 #include <CGAL/Geodesic_skeleton/compute_skinning_weights.h>
 #include <CGAL/Geodesic_skeleton/internal/disjoint_sets.h>

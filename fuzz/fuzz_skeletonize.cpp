@@ -19,6 +19,7 @@
 
 #include <CGAL/Geodesic_skeleton.h>
 
+#include <CGAL/Geodesic_skeleton/IO/json.h>
 #include <CGAL/Geodesic_skeleton/IO/read_mesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

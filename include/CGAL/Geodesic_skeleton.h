@@ -5,8 +5,12 @@
 #define CGAL_GEODESIC_SKELETON_H
 
 /// \file Geodesic_skeleton.h
-/// The umbrella header of the package: includes every public header, in the order of the
-/// data flow (DESIGN.md). Include a single stage's header instead to compile less.
+/// The umbrella header of the package: includes every public header that needs no more than
+/// CGAL, Boost and Eigen, in the order of the data flow (the manual's overview). The headers that need a
+/// file-format library are included on their own: `IO/json.h` and
+/// `IO/read_control_skeleton_json.h` (nlohmann_json), `IO/gltf.h` (tinygltf),
+/// `IO/read_mesh_with_assimp.h` (Assimp). Include a single stage's header instead to
+/// compile less.
 
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
@@ -22,6 +26,7 @@
 #include <CGAL/Geodesic_skeleton/Voxel_frame.h>
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
+#include <CGAL/Geodesic_skeleton/Voxelized_surface.h>
 #include <CGAL/Geodesic_skeleton/voxelize.h>
 #include <CGAL/Geodesic_skeleton/remove_small_pieces.h>
 #include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
@@ -38,6 +43,7 @@
 
 // Smoothing and bones.
 #include <CGAL/Geodesic_skeleton/smooth_skeleton.h>
+#include <CGAL/Geodesic_skeleton/move_skeleton_inside.h>
 #include <CGAL/Geodesic_skeleton/chord_to_point_distance_accumulation.h>
 #include <CGAL/Geodesic_skeleton/Control_skeleton.h>
 #include <CGAL/Geodesic_skeleton/split_into_bones.h>
@@ -47,7 +53,6 @@
 
 // Writers.
 #include <CGAL/Geodesic_skeleton/IO/bvh.h>
-#include <CGAL/Geodesic_skeleton/IO/json.h>
 #include <CGAL/Geodesic_skeleton/IO/obj.h>
 #include <CGAL/Geodesic_skeleton/IO/polylines.h>
 #include <CGAL/Geodesic_skeleton/IO/read_mesh.h>

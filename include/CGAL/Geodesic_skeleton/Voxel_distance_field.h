@@ -7,6 +7,8 @@
 /// \file Voxel_distance_field.h
 /// The result of `distance_transform()`: the radius function of the voxel medial axis.
 
+#include <boost/property_map/property_map.hpp>
+
 #include <CGAL/Geodesic_skeleton/Voxel_frame.h>
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
@@ -78,6 +80,35 @@ private:
   internal::Grid_layout m_layout;
   std::vector<std::uint32_t> m_values;
 };
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// A readable property map from `Voxel_key` to the MAT radius of a voxel in voxels,
+/// `Voxel_distance_field::radius()` divided by the voxel size (`sqrt(squared_distance) -
+/// 1/2`, 0 outside the solid): the `mat_radius_map` that `extract_control_skeleton()`
+/// gives `prune_skeleton()`. It refers to the field, which must outlive it.
+struct Mat_radius_in_voxels_map
+{
+  using key_type = Voxel_key;                        ///< a voxel
+  using value_type = double;                         ///< its radius, in voxels
+  using reference = double;                          ///< returned by value
+  using category = boost::readable_property_map_tag; ///< readable only
+
+  const Voxel_distance_field* field = nullptr; ///< the distance field read
+
+  /// The radius of `k` in voxels.
+  friend double get(const Mat_radius_in_voxels_map& map, const Voxel_key& k)
+  {
+    return map.field->radius(k) / map.field->frame().voxel_size();
+  }
+};
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// The MAT radii of `field`'s voxels in voxels, as a property map (see
+/// `Mat_radius_in_voxels_map`).
+inline Mat_radius_in_voxels_map mat_radius_in_voxels_map(const Voxel_distance_field& field)
+{
+  return Mat_radius_in_voxels_map{&field};
+}
 
 } // namespace Geodesic_skeleton
 } // namespace CGAL

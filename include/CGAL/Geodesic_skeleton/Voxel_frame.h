@@ -98,6 +98,12 @@ public:
     return Point(c[0], c[1], c[2]);
   }
 
+  /// Whether two frames are the same: equal origins, axes and voxel sizes.
+  friend bool operator==(const Voxel_frame& a, const Voxel_frame& b)
+  {
+    return a.m_origin == b.m_origin && a.m_axes == b.m_axes && a.m_voxel_size == b.m_voxel_size;
+  }
+
 private:
   static double dot(const Vector& a, const Vector& b)
   {

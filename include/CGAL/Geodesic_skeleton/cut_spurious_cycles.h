@@ -8,6 +8,7 @@
 /// Opens the cycles of a voxel skeleton that the mesh has no handle for: the tunnels that
 /// voxelization makes where two parts come within a voxel of each other.
 
+#include <CGAL/Geodesic_skeleton/Voxelized_surface.h>
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/internal/disjoint_sets.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
@@ -161,7 +162,7 @@ inline std::vector<bool> nodes_on_cycles(const Skeleton_adjacency& graph)
 class Inside_steps
 {
 public:
-  explicit Inside_steps(Grid_line_crossings& g) : m_g(g) {}
+  explicit Inside_steps(const Grid_line_crossings& g) : m_g(g) {}
 
   // Decides every step of `steps` (pairs of adjacent voxels) at once.
   std::vector<bool> leave_inside(const std::vector<std::pair<Voxel_key, Voxel_key>>& steps)
@@ -236,7 +237,7 @@ public:
   }
 
 private:
-  Grid_line_crossings& m_g;
+  const Grid_line_crossings& m_g;
 };
 
 // cut_spurious_cycles() with its inside tests against `mesh_lines` (a callable returning
@@ -387,9 +388,14 @@ std::size_t cut_spurious_cycles_impl(VoxelSet& skeleton, const FaceGraph& mesh, 
 ///     `get(CGAL::vertex_point, mesh)`).
 ///   - `fill_holes` (package parameter, `bool`): count the fans that close the mesh's holes
 ///     as surface, as `voxelize()` does (default: `true`).
+///   - `voxelized_surface` (package parameter, `const Voxelized_surface*`): the mesh as
+///     `voxelize()` rasterised it (its `voxelized_surface_output`), for the inside tests
+///     (default: built from `mesh`, `vertex_point_map` and `fill_holes` when needed). It
+///     must be in the skeleton's frame.
 ///
 /// \returns the number of cycles opened.
-/// \throws std::invalid_argument when a mesh vertex has a non-finite coordinate.
+/// \throws std::invalid_argument when a mesh vertex has a non-finite coordinate, or
+///      `voxelized_surface` is in another frame.
 ///
 /// \b Complexity: O(S log S + M + F) for S skeleton voxels, M mesh vertices and edges and
 ///    F faces (plus the grid cells the faces cover along each axis), and O(S) per run of
@@ -405,7 +411,8 @@ std::size_t cut_spurious_cycles(VoxelSet& skeleton, const FaceGraph& mesh,
                                     get_const_property_map(CGAL::vertex_point, mesh));
   if(skeleton.size() == 0 || num_faces(mesh) == 0)
     return 0;
-  internal::Lazy_mesh_grid_lines<FaceGraph, decltype(vpm)> mesh_lines(
+  internal::Stage_surface<FaceGraph, decltype(vpm)> mesh_lines(
+      choose_parameter(get_parameter(np, internal_np::voxelized_surface_tag), static_cast<const Voxelized_surface*>(nullptr)),
       mesh, vpm, skeleton.frame(), choose_parameter(get_parameter(np, internal_np::fill_holes_tag), true),
       "cut_spurious_cycles");
   return internal::cut_spurious_cycles_impl(skeleton, mesh, mesh_lines);

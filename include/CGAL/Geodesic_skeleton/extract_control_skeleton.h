@@ -11,12 +11,13 @@
 #include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
+#include <CGAL/Geodesic_skeleton/Voxelized_surface.h>
 #include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/geodesic_mapping_function.h>
+#include <CGAL/Geodesic_skeleton/move_skeleton_inside.h>
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
-#include <CGAL/Geodesic_skeleton/internal/closed_mesh_interior.h>
 #include <CGAL/Geodesic_skeleton/prune_skeleton.h>
 #include <CGAL/Geodesic_skeleton/reeb_graph.h>
 #include <CGAL/Geodesic_skeleton/remove_small_pieces.h>
@@ -87,20 +88,6 @@ Output* output_pointer(const NamedParameters& np, Tag tag)
 {
   return CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, tag), static_cast<Output*>(nullptr));
 }
-
-// The MAT radius of a voxel in voxels, as prune_skeleton() reads it.
-struct Radius_in_voxels_map
-{
-  using key_type = Voxel_key;
-  using value_type = double;
-  using reference = double;
-  using category = boost::readable_property_map_tag;
-  const Voxel_distance_field* field;
-  friend double get(const Radius_in_voxels_map& m, const Voxel_key& k)
-  {
-    return m.field->radius(k) / m.field->frame().voxel_size();
-  }
-};
 
 // Times stages, reports them to the visitor and records them.
 template <typename Visitor>
@@ -177,13 +164,19 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 /// opens the cycles of the skeleton that the mesh has no handle for (where parts come
 /// within a voxel of each other, the solid joins them).
 ///
-/// Between `smooth_skeleton()` and `split_into_bones()`, when the mesh is a closed triangle
-/// mesh, a point of the curve skeleton that lies outside it (smoothing averages the points
-/// along the bends of the skeleton, which in a limb a few voxels thin can take one out)
-/// moves to the nearest point of the surface and a quarter voxel further in, so that every
-/// point of the curve skeleton is inside the mesh, and with them every joint and every
-/// point of the bones, which are curve-skeleton points. An open mesh has no inside to
-/// test, and its points stay where the skeleton puts them.
+/// Between `smooth_skeleton()` and `split_into_bones()`, `move_skeleton_inside()`: when the
+/// mesh is a closed triangle mesh, a point of the curve skeleton that lies outside it
+/// (smoothing averages the points along the bends of the skeleton, which in a limb a few
+/// voxels thin can take one out) moves to the nearest point of the surface and a quarter
+/// voxel further in, so that every point of the curve skeleton is inside the mesh (by the
+/// non-zero winding rule of the voxel stages), and with them every joint and every point of
+/// the bones, which are curve-skeleton points. An open mesh has no inside to test, and its
+/// points stay where the skeleton puts them.
+///
+/// The function is a composition of these public stages and nothing else: the same calls
+/// made by hand give the same result (the manual's data flow shows them). `voxelize()`
+/// hands the mesh as it rasterised it (`Voxelized_surface`) to the stages that test inside
+/// and outside, so that the mesh is read and transformed once.
 ///
 /// The result is in the mesh's own coordinates and does not change (beyond the rounding
 /// of coordinates) when the mesh is rotated or moved, since the grid follows the mesh's
@@ -247,12 +240,15 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   out.clear();
   internal::check_control_skeleton_parameters(np, "extract_control_skeleton");
 
+  // Each stage is a public function; the mesh as voxelize() rasterised it is shared with
+  // the stages that test inside and outside, so that none reads the mesh again.
   Dense_voxel_grid solid;
-  internal::Rasterised_triangles rasterised;
-  report.solid_voxels = internal::voxelize_impl(mesh, solid, np, &rasterised);
+  Voxelized_surface surface;
+  report.solid_voxels = voxelize(mesh, solid, parameters::combine(parameters::voxelized_surface_output(&surface), np));
   report.resolution = choose_parameter(get_parameter(np, internal_np::resolution_tag), default_voxel_resolution);
   report.voxel_size = solid.frame().voxel_size();
   clock.finished("voxelize");
+  const auto with_surface = parameters::combine(parameters::voxelized_surface(&std::as_const(surface)), np);
 
   const Voxel_distance_field distances = distance_transform(solid, np);
   clock.finished("distance_transform");
@@ -263,17 +259,10 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   solid.for_each([&](const Voxel_key& k) { skeleton.insert(k); });
   clock.finished("thin");
 
-  // The mesh's faces in the grid, for the inside tests of cut_spurious_cycles() and
-  // to_graph(): the triangles that voxelize() rasterised.
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, mesh));
-  const double memory_limit = internal::memory_limit(np);
-  std::optional<internal::Grid_line_crossings> grid_lines(std::in_place, std::move(rasterised.in_grid));
-  auto mesh_lines = [&grid_lines]() -> internal::Grid_line_crossings& { return *grid_lines; };
   if(Skeleton* thinned_output = internal::output_pointer<Skeleton>(np, internal_np::thinned_skeleton_output_tag))
   {
     Skeleton thinned;
-    internal::to_graph_impl(skeleton, distances, mesh, thinned, vpm, memory_limit, mesh_lines);
+    to_graph(skeleton, distances, mesh, thinned, with_surface);
     report.thinned = skeleton_statistics(thinned);
     *thinned_output = std::move(thinned);
   }
@@ -284,25 +273,24 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   report.small_pieces = remove_small_pieces(skeleton, distances, np);
   clock.finished("remove_small_pieces");
 
-  report.spurious_cycles_cut = internal::cut_spurious_cycles_impl(skeleton, mesh, mesh_lines);
+  report.spurious_cycles_cut = cut_spurious_cycles(skeleton, mesh, with_surface);
   clock.finished("cut_spurious_cycles");
 
-  report.pruning = prune_skeleton(
-      skeleton, parameters::combine(parameters::mat_radius_map(internal::Radius_in_voxels_map{&distances}), np));
+  report.pruning =
+      prune_skeleton(skeleton, parameters::combine(parameters::mat_radius_map(mat_radius_in_voxels_map(distances)), np));
   clock.finished("prune");
 
   Skeleton curve;
-  internal::to_graph_impl(skeleton, distances, mesh, curve, vpm, memory_limit, mesh_lines);
+  to_graph(skeleton, distances, mesh, curve, with_surface);
   report.pruned = skeleton_statistics(curve);
-  grid_lines.reset(); // as large as the mesh: freed before the curve points' inside test reads it
   clock.finished("to_graph");
 
   smooth_skeleton(curve, np);
   clock.finished("smooth");
 
-  const std::vector<std::size_t> moved_inside =
-      internal::move_curve_points_inside(mesh, vpm, curve, 0.25 * report.voxel_size);
+  const std::vector<std::size_t> moved_inside = move_skeleton_inside(mesh, curve, with_surface);
   report.curve_points_moved_inside = moved_inside.size();
+  surface = Voxelized_surface(); // as large as the mesh
   clock.finished("curve_points_inside");
 
   split_into_bones(curve, out, np);

@@ -6,7 +6,7 @@
 
 /// \file geodesic_distances.h
 /// Geodesic distances on the surface of a mesh, approximated by shortest paths along its
-/// edges (Dijkstra), the baseline distance field of the package (DESIGN.md).
+/// edges (Dijkstra), the baseline distance field of the package.
 
 #include <CGAL/Geodesic_skeleton/internal/edge_length_map.h>
 #include <CGAL/Geodesic_skeleton/internal/indexed_vertices.h>

@@ -27,6 +27,15 @@ namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
 
+// The ridge thresholds of the thinning's tip protection (Grassfire::on_ridge(): the largest
+// growth of the MAT radius per unit step away from an end point that keeps it a tip). When
+// a round's candidates are chosen, 0.6: a tip tapering at up to 37 degrees keeps its
+// branch, the medial sheets of edges (0.71 per step along a right angle's bisector) burn.
+// When a candidate is deleted, 0.3: only an end point on a plateau of the distance, which
+// the round's own deletions exposed at a corner of the shape, goes.
+constexpr double tip_growth_when_choosing = 0.6;
+constexpr double tip_growth_when_deleting = 0.3;
+
 // The working state of the thinning over a padded box: bit 0 = in the set, bit 1 = queued,
 // bit 2 = deleted by the thinning.
 class Grassfire
@@ -49,7 +58,7 @@ public:
   // burnt in rounds: first the round's candidates are chosen on the configuration at the
   // start of the round (simple, and not a protected end point), then they are deleted one
   // by one, each if still simple and not an end point that has become clearly medial
-  // (radius growth below 0.3 per unit step, as on a plateau of the distance): an end point
+  // (radius growth below tip_growth_when_deleting per unit step, as on a plateau of the distance): an end point
   // that the round's own deletions expose at a corner of the shape is no tip, and goes.
   std::size_t run(const std::vector<std::uint32_t>& order)
   {
@@ -76,7 +85,7 @@ public:
           if(!(m_state[i] & IN))
             continue;
           const std::uint32_t config = configuration(i);
-          if(!protected_end(i, config, 0.6) && m_test.is_simple(config))
+          if(!protected_end(i, config, tip_growth_when_choosing) && m_test.is_simple(config))
             candidates[candidate_count++] = i;
         }
         round_size = 0;
@@ -84,7 +93,7 @@ public:
         {
           const std::uint32_t i = candidates[k];
           const std::uint32_t config = configuration(i);
-          if(protected_end(i, config, 0.3) || !m_test.is_simple(config))
+          if(protected_end(i, config, tip_growth_when_deleting) || !m_test.is_simple(config))
             continue;
           m_state[i] = DELETED;
           ++removed;
@@ -137,7 +146,8 @@ public:
   bool is_end_point(std::size_t i) const { return bit_count(configuration(i)) == 1; }
 
   // Whether the medial ball of i is not swallowed by a neighbour's: no voxel q one or two
-  // steps away along the 26 directions (two steps smooth the discrete radii) has r(q) >= r(i) + 0.6 |q - i| (a centre of maximal ball, up to the discreteness
+  // steps away along the 26 directions (two steps smooth the discrete radii) has
+  // r(q) >= r(i) + growth |q - i| (a centre of maximal ball, up to the discreteness
   // of the distance field). Ends of curves are kept only there, so that a branch ends
   // where the shape's end is rounded (about a radius from the tip) and the erosion does not
   // leave hairs behind. Along the bisector of a right-angled edge the radius grows by

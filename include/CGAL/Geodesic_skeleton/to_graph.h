@@ -8,6 +8,7 @@
 /// A one-voxel-thick voxel skeleton as a curve-skeleton graph, with the mesh vertices
 /// mapped to its vertices.
 
+#include <CGAL/Geodesic_skeleton/Voxelized_surface.h>
 #include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
@@ -116,7 +117,7 @@ std::vector<Voxel_frame::Vector> skeleton_points_inside(const std::vector<Voxel_
     centres[v] = Vec3{nodes[v].x + 0.5, nodes[v].y + 0.5, nodes[v].z + 0.5};
   if(has_faces)
   {
-    Grid_line_crossings& g = mesh_lines();
+    const Grid_line_crossings& g = mesh_lines();
     const std::vector<Point_side> sides = sides_of_points(g, centres);
     std::vector<std::size_t> outside;
     std::vector<Vec3> outside_centres;
@@ -131,7 +132,7 @@ std::vector<Voxel_frame::Vector> skeleton_points_inside(const std::vector<Voxel_
     // among the voxel and its neighbours.
     std::vector<bool> found;
     const std::vector<Vec3> in_voxel =
-        inside_points_in_cubes(g, outside_centres, 0.5, Inside_piece_choice::longest, found);
+        inside_points_in_cubes(g, outside_centres, own_voxel_half_width, Inside_piece_choice::longest, found);
     std::vector<std::size_t> missed;
     std::vector<Vec3> missed_centres;
     for(std::size_t k = 0; k < outside.size(); ++k)
@@ -143,7 +144,8 @@ std::vector<Voxel_frame::Vector> skeleton_points_inside(const std::vector<Voxel_
         missed_centres.push_back(outside_centres[k]);
       }
     const std::vector<Vec3> nearby =
-        inside_points_in_cubes(g, missed_centres, 1.5, Inside_piece_choice::nearest, found);
+        inside_points_in_cubes(g, missed_centres, with_neighbours_half_width, Inside_piece_choice::nearest,
+                               found);
     for(std::size_t k = 0; k < missed.size(); ++k)
       if(found[k])
         centres[missed[k]] = nearby[k];
@@ -293,13 +295,17 @@ void to_graph_impl(const VoxelSet& skeleton, const Voxel_distance_field& distanc
 ///     `get(CGAL::vertex_point, mesh)`).
 ///   - `fill_holes` (package parameter, `bool`): count the fans that close the mesh's holes
 ///     as surface in the inside test, as `voxelize()` does (default: `true`).
+///   - `voxelized_surface` (package parameter, `const Voxelized_surface*`): the mesh as
+///     `voxelize()` rasterised it (its `voxelized_surface_output`), for the inside test
+///     (default: built from `mesh`, `vertex_point_map` and `fill_holes` when a centre is
+///     in doubt). It must be in the skeleton's frame.
 ///   - `memory_limit` (package parameter, `double`, bytes): the most memory the function
 ///     may allocate (default: `default_voxel_memory_limit`, 2 GiB); the need, 4 bytes per
 ///     voxel of the field's box and of the skeleton's box, is checked before allocating.
 ///
 /// \pre `skeleton` is not empty, and has the frame of `distances`.
-/// \throws std::invalid_argument when `skeleton` is empty or a mesh vertex has a
-///      non-finite coordinate.
+/// \throws std::invalid_argument when `skeleton` is empty, a mesh vertex has a
+///      non-finite coordinate, or `voxelized_surface` is in another frame.
 /// \throws std::length_error when the work arrays would need more than `memory_limit`.
 ///
 /// \b Complexity: O(S + B + M + F) time for S skeleton voxels, B voxels in the field's box,
@@ -315,7 +321,8 @@ void to_graph(const VoxelSet& skeleton, const Voxel_distance_field& distances,
   using CGAL::parameters::get_parameter;
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, mesh));
-  internal::Lazy_mesh_grid_lines<FaceGraph, decltype(vpm)> mesh_lines(
+  internal::Stage_surface<FaceGraph, decltype(vpm)> mesh_lines(
+      choose_parameter(get_parameter(np, internal_np::voxelized_surface_tag), static_cast<const Voxelized_surface*>(nullptr)),
       mesh, vpm, skeleton.frame(), choose_parameter(get_parameter(np, internal_np::fill_holes_tag), true), "to_graph");
   internal::to_graph_impl(skeleton, distances, mesh, graph, vpm, internal::memory_limit(np), mesh_lines);
 }

@@ -9,6 +9,7 @@
 /// principal axes.
 
 #include <CGAL/Geodesic_skeleton/Voxel_frame.h>
+#include <CGAL/Geodesic_skeleton/Voxelized_surface.h>
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/internal/byte_runs.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
@@ -175,8 +176,7 @@ inline void flood_outside(const Grid_layout& layout, std::vector<std::uint8_t>& 
 // voxelize(), which also hands over, when `rasterised` is not null, the triangles it
 // rasterised, for the later inside tests of the pipeline.
 template <typename FaceGraph, typename VoxelSet, typename NamedParameters>
-std::size_t voxelize_impl(const FaceGraph& mesh, VoxelSet& voxels, const NamedParameters& np,
-                          Rasterised_triangles* rasterised)
+std::size_t voxelize_impl(const FaceGraph& mesh, VoxelSet& voxels, const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -253,8 +253,9 @@ std::size_t voxelize_impl(const FaceGraph& mesh, VoxelSet& voxels, const NamedPa
       ++count;
     }
   });
-  if(rasterised != nullptr)
-    rasterised->in_grid = std::move(grid_triangles);
+  if(Voxelized_surface* surface = choose_parameter(get_parameter(np, internal_np::voxelized_surface_output_tag),
+                                                   static_cast<Voxelized_surface*>(nullptr)))
+    *surface = Voxelized_surface(frame, std::move(grid_triangles));
   return count;
 }
 
@@ -350,6 +351,11 @@ std::size_t voxelize_impl(const FaceGraph& mesh, VoxelSet& voxels, const NamedPa
 ///     may allocate (default: `default_voxel_memory_limit`, 2 GiB). The need is estimated
 ///     before allocating: 11 bytes per voxel of the grid's box (6 with
 ///     `keep_surface_voxels`).
+///   - `voxelized_surface_output` (package parameter, `Voxelized_surface*`): receives the
+///     triangles rasterised (faces, then hole-filling fans) in the grid's coordinates, for
+///     the inside tests of `to_graph()`, `cut_spurious_cycles()` and
+///     `move_skeleton_inside()` (their `voxelized_surface`), which then neither read nor
+///     transform the mesh again (default: none; a null pointer is the same).
 ///
 /// \returns the number of voxels of the solid.
 /// \pre the mesh has at least one face, every coordinate is finite, it encloses some
@@ -372,7 +378,7 @@ template <typename FaceGraph, typename VoxelSet,
 std::size_t voxelize(const FaceGraph& mesh, VoxelSet& voxels,
                      const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return internal::voxelize_impl(mesh, voxels, np, nullptr);
+  return internal::voxelize_impl(mesh, voxels, np);
 }
 
 } // namespace Geodesic_skeleton

@@ -2,6 +2,12 @@
 // CGAL mesh types, which must agree.
 #include <CGAL/Geodesic_skeleton.h>
 
+// The umbrella header needs none of the file-format libraries (nlohmann_json, tinygltf,
+// Assimp): the installed package does not find them, and this project does not link them.
+#if defined(INCLUDE_NLOHMANN_JSON_HPP_) || defined(TINY_GLTF_H_) || defined(AI_SCENE_H_INC)
+#error "<CGAL/Geodesic_skeleton.h> includes a file-format library"
+#endif
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Polyhedron_3.h>

@@ -4,119 +4,25 @@
 #ifndef CGAL_GEODESIC_SKELETON_INTERNAL_CLOSED_MESH_INTERIOR_H
 #define CGAL_GEODESIC_SKELETON_INTERNAL_CLOSED_MESH_INTERIOR_H
 
-#include <CGAL/Geodesic_skeleton/Control_skeleton.h>
-#include <CGAL/Geodesic_skeleton/internal/mesh_triangles.h>
-#include <CGAL/Geodesic_skeleton/internal/principal_frame.h>
-#include <CGAL/Geodesic_skeleton/internal/triangle_box_overlap.h>
-#include <CGAL/Geodesic_skeleton/internal/vertex_components.h>
+// Moving the points of a curve skeleton that smoothing took out of a closed mesh back in,
+// with the inside test of the voxel stages (winding numbers along grid lines) on the
+// triangles that voxelize() rasterised.
 
-#include <CGAL/boost/graph/helpers.h>
-#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Geodesic_skeleton/Control_skeleton.h>
+#include <CGAL/Geodesic_skeleton/Voxel_frame.h>
+#include <CGAL/Geodesic_skeleton/internal/grid_line_crossings.h>
+#include <CGAL/Geodesic_skeleton/internal/vec3.h>
+
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
-#include <array>
-#include <cmath>
 #include <cstddef>
 #include <limits>
-#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
-
-// Where the ray from p along d meets triangle t: not at all, once, or too near an edge or
-// a vertex to tell (where a crossing could be counted twice or missed). Moeller-Trumbore.
-enum class Ray_meets { no, once, unclear };
-
-inline Ray_meets ray_meets_triangle(const Vec3& p, const Vec3& d, const Triangle3& t)
-{
-  // p + s d = t0 + u (t1 - t0) + v (t2 - t0).
-  const Vec3 e1 = sub(t[1], t[0]), e2 = sub(t[2], t[0]);
-  const Vec3 h = cross3(d, e2);
-  const double det = dot3(e1, h);
-  const double scale = norm3(e1) * norm3(e2); // not sqrt of a product of squares: it overflows sooner
-  if(std::abs(det) <= 1e-12 * scale)
-    return Ray_meets::no; // the ray runs along the triangle's plane: no single crossing
-  const Vec3 w = sub(p, t[0]);
-  const double u = dot3(w, h) / det;
-  const Vec3 q = cross3(w, e1);
-  const double v = dot3(d, q) / det;
-  const double s = dot3(e2, q) / det;
-  const double margin = 1e-9;
-  if(u < -margin || v < -margin || u + v > 1 + margin || s < 0)
-    return Ray_meets::no;
-  if(u < margin || v < margin || u + v > 1 - margin || s < margin)
-    return Ray_meets::unclear;
-  return Ray_meets::once;
-}
-
-// Whether the box of a triangle can meet the ray from p along grid axis `axis`.
-inline bool box_meets_axis_ray(const Vec3& p, int axis, const Triangle_box& box)
-{
-  const int a = (axis + 1) % 3, b = (axis + 2) % 3;
-  return !(p[a] < box.lo[a] || p[a] > box.hi[a] || p[b] < box.lo[b] || p[b] > box.hi[b] || p[axis] > box.hi[axis]);
-}
-
-// The directions of the rays of is_inside_closed_soup(), in the order they are tried.
-inline const std::array<Vec3, 5>& ray_directions()
-{
-  static const std::array<Vec3, 5> directions = {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1},
-                                                 Vec3{0.5773502692, 0.5773502692, 0.5773502692},
-                                                 Vec3{0.2672612419, -0.5345224838, 0.8017837257}};
-  return directions;
-}
-
-// The pieces of a closed triangle soup (its connected components) that a ray has crossed
-// an odd number of times so far: its origin is inside the pieces left, by ray parity.
-// Parity is taken piece by piece, so that where two closed pieces overlap (a character's
-// parts, a self-intersecting union), which voxelize() fills, the point is inside, not
-// outside as the parity of all the crossings would say.
-class Odd_pieces
-{
-public:
-  void cross(std::size_t piece)
-  {
-    const auto i = std::find(m_odd.begin(), m_odd.end(), piece);
-    if(i == m_odd.end())
-      m_odd.push_back(piece);
-    else
-      m_odd.erase(i);
-  }
-  bool inside_some_piece() const { return !m_odd.empty(); }
-
-private:
-  std::vector<std::size_t> m_odd; // few: the pieces overlapping at one point
-};
-
-// Whether p is inside one of the closed pieces of a triangle soup (`piece_of` each triangle),
-// by ray parity (Odd_pieces). Rays go along the axes first, so that a triangle whose box
-// misses the ray's line is skipped with a few comparisons. A ray that passes too near an
-// edge or a vertex of a triangle is dropped and another direction tried, from
-// `first_direction` on. Costs O(F) per query: meant for the few points in doubt.
-inline bool is_inside_closed_soup(const Vec3& p, const std::vector<Triangle3>& triangles,
-                                  const std::vector<std::size_t>& piece_of, int first_direction = 0)
-{
-  for(int axis = first_direction; axis < 5; ++axis)
-  {
-    const Vec3& d = ray_directions()[std::size_t(axis)];
-    bool ambiguous = false;
-    Odd_pieces odd;
-    for(std::size_t i = 0; i < triangles.size() && !ambiguous; ++i)
-    {
-      if(axis < 3 && !box_meets_axis_ray(p, axis, Triangle_box(triangles[i])))
-        continue;
-      const Ray_meets meets = ray_meets_triangle(p, d, triangles[i]);
-      ambiguous = meets == Ray_meets::unclear;
-      if(meets == Ray_meets::once)
-        odd.cross(piece_of[i]);
-    }
-    if(!ambiguous)
-      return odd.inside_some_piece();
-  }
-  return false;
-}
 
 // The point of triangle t nearest p (by the regions of the triangle's Voronoi diagram).
 inline Vec3 closest_point_on_triangle(const Vec3& p, const Triangle3& t)
@@ -150,136 +56,157 @@ inline Vec3 closest_point_on_triangle(const Vec3& p, const Triangle3& t)
   return Vec3{t[0][0] + ab[0] * v + ac[0] * w, t[0][1] + ab[1] * v + ac[1] * w, t[0][2] + ab[2] * v + ac[2] * w};
 }
 
-// The triangles of a closed triangle mesh and the piece (connected component) of each, to
-// ask whether points are inside it and to move the ones outside just in. Empty (and every
-// answer "leave it") for a mesh that is not a closed triangle mesh: it has no inside to test.
-class Closed_mesh_interior
+// The squared distance from p to the unit cells a triangle's box covers: a lower bound of
+// its distance to the triangle; 0 for a triangle without cells (not finite or far away),
+// which is then measured.
+inline double squared_distance_to_cells(const Vec3& p, const Grid_line_crossings::Cell_box& cells)
 {
-public:
-  // `face_triangles` are the faces of `mesh`, in world coordinates, in the order of
-  // faces(mesh) (mesh_triangles()).
-  template <typename TriangleMesh>
-  Closed_mesh_interior(const TriangleMesh& mesh, std::vector<Triangle3> face_triangles)
+  double d2 = 0;
+  for(int i = 0; i < 3; ++i)
   {
-    if(!CGAL::is_closed(mesh) || !CGAL::is_triangle_mesh(mesh))
-      return;
-    m_triangles = std::move(face_triangles);
-    const auto vim = CGAL::get_initialized_vertex_index_map(mesh);
-    const Vertex_components pieces = vertex_components(mesh, vim);
-    for(auto f : faces(mesh))
-      m_piece_of.push_back(pieces.component_of[std::size_t(get(vim, target(halfedge(f, mesh), mesh)))]);
+    if(cells.lo[i] > cells.hi[i])
+      return 0;
+    const double below = double(cells.lo[i]) - p[i], above = p[i] - (double(cells.hi[i]) + 1);
+    const double gap = (std::max)({below, above, 0.});
+    d2 += gap * gap;
   }
+  return d2;
+}
 
-  bool has_interior() const { return !m_triangles.empty(); }
-
-  // Whether each point is inside (is_inside_closed_soup()), the rays along x of all the
-  // points in one pass over the triangles (the points sorted by y, each triangle looking up
-  // those in its box's y range); the other rays only for the points x cannot tell.
-  std::vector<bool> inside(const std::vector<Vec3>& points) const
+// The point of the soup of `lines` nearest p (grid coordinates), or p for an empty soup.
+// A triangle whose cells are farther than the nearest point so far is skipped after a few
+// comparisons. O(F) per query, with a small constant: meant for the few points to move.
+inline Vec3 nearest_point_on_soup(const Grid_line_crossings& lines, const Vec3& p)
+{
+  Vec3 nearest = p;
+  double best = std::numeric_limits<double>::infinity();
+  const std::vector<Triangle3>& triangles = lines.triangles();
+  for(std::size_t t = 0; t < triangles.size(); ++t)
   {
-    std::vector<std::size_t> by_y(points.size());
-    for(std::size_t k = 0; k < points.size(); ++k)
-      by_y[k] = k;
-    std::sort(by_y.begin(), by_y.end(), [&](std::size_t a, std::size_t b) { return points[a][1] < points[b][1]; });
-    std::vector<Odd_pieces> odd(points.size());
-    std::vector<bool> unclear(points.size(), false);
-    for(std::size_t i = 0; i < m_triangles.size(); ++i)
+    if(squared_distance_to_cells(p, lines.cells_of(t)) >= best)
+      continue;
+    const Vec3 q = closest_point_on_triangle(p, triangles[t]);
+    const double d2 = dot3(sub(q, p), sub(q, p));
+    if(d2 < best)
     {
-      const Triangle_box box(m_triangles[i]); // (not stored: as large as the mesh)
-      auto k = std::lower_bound(by_y.begin(), by_y.end(), box.lo[1],
-                                [&](std::size_t a, double y) { return points[a][1] < y; });
-      for(; k != by_y.end() && points[*k][1] <= box.hi[1]; ++k)
-      {
-        if(unclear[*k] || !box_meets_axis_ray(points[*k], 0, box))
-          continue;
-        const Ray_meets meets = ray_meets_triangle(points[*k], ray_directions()[0], m_triangles[i]);
-        unclear[*k] = meets == Ray_meets::unclear;
-        if(meets == Ray_meets::once)
-          odd[*k].cross(m_piece_of[i]);
-      }
+      best = d2;
+      nearest = q;
     }
-    std::vector<bool> in(points.size());
-    for(std::size_t k = 0; k < points.size(); ++k)
-      in[k] = unclear[k] ? is_inside_closed_soup(points[k], m_triangles, m_piece_of, 1) : odd[k].inside_some_piece();
-    return in;
   }
+  return nearest;
+}
 
-  // Moves `p`, outside the mesh, to the nearest point of the surface and `depth` further in
-  // (halving the step while it would leave the mesh on the other side). Returns whether it
-  // moved.
-  bool move_inside(Vec3& p, double depth) const
-  {
-    if(!has_interior())
-      return false;
-    Vec3 nearest = p;
-    double best = std::numeric_limits<double>::infinity();
-    for(const Triangle3& t : m_triangles)
-    {
-      const Vec3 q = closest_point_on_triangle(p, t);
-      const double d = dot3(sub(q, p), sub(q, p));
-      if(d < best)
-      {
-        best = d;
-        nearest = q;
-      }
-    }
-    const Vec3 in = sub(nearest, p);
-    const double length = norm3(in);
-    if(!(length > 0))
-      return false;
-    for(double step = depth; step > 1e-6 * depth; step /= 2)
-    {
-      const Vec3 candidate{nearest[0] + step * in[0] / length, nearest[1] + step * in[1] / length,
-                           nearest[2] + step * in[2] / length};
-      if(is_inside_closed_soup(candidate, m_triangles, m_piece_of))
-      {
-        p = candidate;
-        return true;
-      }
-    }
-    return false;
-  }
-
-private:
-  std::vector<Triangle3> m_triangles;
-  std::vector<std::size_t> m_piece_of; // by triangle
-};
+// How far inside the surface move_curve_points_inside() puts a point, in voxels: deep
+// enough that the rounding of coordinates cannot take it back out, shallow enough to stay
+// on the medial side of a limb one voxel thin.
+constexpr double depth_inside_in_voxels = 0.25;
 
 // Moves every point of a curve skeleton that lies outside a closed triangle mesh just
-// inside it (see Closed_mesh_interior::move_inside): to_graph() puts the points inside,
-// but smoothing averages them along the bends of the skeleton, which in a limb a few
-// voxels thin can take them out (up to 1.6 % of the diagonal). Every point is tested,
-// not only the thin ones: the medial radius is that of the voxel solid, which the voxels
-// the surface touches make thicker than the mesh, and points of 2 to 3.3 voxels' radius
-// come out too (cow and camel at resolutions 96 and 128, man at 48 to 96). The joints and
-// the bones' points are the curve's points (split_into_bones()), so moving the points
-// before the split puts them inside too. Returns the vertices moved, in increasing order.
+// inside it: to the nearest point of the surface, then `depth` voxels further along the
+// direction from the point to it, halving the step while that lands outside (on the other
+// side of a thin part); where no step enters, the inside point nearest to that surface
+// point on grid lines within a voxel and a half of it (inside_points_in_cubes()).
+// to_graph() puts the points inside, but smoothing averages them along the bends of the
+// skeleton, which in a limb a few voxels thin can take them out (up to 1.6 % of the
+// diagonal). Every point is tested, not only the thin ones: the medial
+// radius is that of the voxel solid, which the voxels the surface touches make thicker
+// than the mesh, and points of 2 to 3.3 voxels' radius come out too (cow and camel at
+// resolutions 96 and 128, man at 48 to 96). The joints and the bones' points are the
+// curve's points (split_into_bones()), so moving the points before the split puts them
+// inside too.
 //
-// Complexity: O(F log N + C) for N points, F faces and C pairs of a point and a face that
-// its ray along x may cross, plus O(F) for each point moved.
-template <typename TriangleMesh, typename VertexPointMap, typename CurveSkeleton>
-std::vector<std::size_t> move_curve_points_inside(const TriangleMesh& mesh, VertexPointMap vpm,
+// `lines` holds the mesh's faces in the grid coordinates of `frame` (the triangles that
+// voxelize() rasterised); inside is where the winding number is not zero, as for the
+// other inside tests of the voxel stages (sides_of_points()), so overlapping closed
+// pieces are inside. A point no grid line can decide is left where it is. The caller
+// checks that the mesh is closed (move_skeleton_inside()). Returns the vertices moved, in
+// increasing order.
+//
+// Complexity: O(F + N + C) for F faces, N points and C pairs of a point and a face whose
+// cells its grid line meets, plus O(F) for each point moved (most faces skipped by their
+// cells) and O(F) per halving of the step.
+template <typename CurveSkeleton>
+std::vector<std::size_t> move_curve_points_inside(const Voxel_frame& frame, const Grid_line_crossings& lines,
                                                   CurveSkeleton& skeleton, double depth)
 {
   using Point = decltype(skeleton[0].point);
   const std::size_t n = num_vertices(skeleton);
-  if(n == 0 || !CGAL::is_closed(mesh) || !CGAL::is_triangle_mesh(mesh))
-    return {};
   std::vector<Vec3> points(n);
   for(std::size_t v = 0; v < n; ++v)
   {
     const Point& q = skeleton[v].point;
-    points[v] = Vec3{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())};
+    points[v] = frame.to_grid(Vec3{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())});
   }
-  const Closed_mesh_interior interior(mesh, mesh_triangles(mesh, vpm, "extract_control_skeleton"));
-  const std::vector<bool> inside = interior.inside(points);
-  std::vector<std::size_t> moved;
+  const std::vector<Point_side> sides = sides_of_points(lines, points);
+
+  // The points outside, their nearest surface points and the direction inwards.
+  std::vector<std::size_t> outside;
+  std::vector<Vec3> on_surface, inwards;
   for(std::size_t v = 0; v < n; ++v)
-    if(!inside[v] && interior.move_inside(points[v], depth))
+  {
+    if(sides[v] != Point_side::outside)
+      continue;
+    const Vec3 nearest = nearest_point_on_soup(lines, points[v]);
+    const Vec3 in = sub(nearest, points[v]);
+    const double length = norm3(in);
+    if(!(length > 0))
+      continue;
+    outside.push_back(v);
+    on_surface.push_back(nearest);
+    inwards.push_back(Vec3{in[0] / length, in[1] / length, in[2] / length});
+  }
+
+  // All the candidates of one step size in one inside test.
+  std::vector<bool> placed(outside.size(), false);
+  std::vector<std::size_t> moved;
+  for(double step = depth; step > 1e-6 * depth; step /= 2)
+  {
+    std::vector<std::size_t> trying;
+    std::vector<Vec3> candidates;
+    for(std::size_t i = 0; i < outside.size(); ++i)
+      if(!placed[i])
+      {
+        trying.push_back(i);
+        const Vec3& s = on_surface[i];
+        candidates.push_back(Vec3{s[0] + step * inwards[i][0], s[1] + step * inwards[i][1], s[2] + step * inwards[i][2]});
+      }
+    if(trying.empty())
+      break;
+    const std::vector<Point_side> candidate_sides = sides_of_points(lines, candidates);
+    for(std::size_t k = 0; k < trying.size(); ++k)
+      if(candidate_sides[k] == Point_side::inside)
+      {
+        placed[trying[k]] = true;
+        const std::size_t v = outside[trying[k]];
+        const Vec3 w = frame.to_world(candidates[k]);
+        skeleton[v].point = Point(w[0], w[1], w[2]);
+        moved.push_back(v);
+      }
+  }
+  // Where no step along that direction enters the mesh (the nearest point is the tip of a
+  // sharp horn, seen from the side: the direction misses the horn), the inside point
+  // nearest to the surface point on grid lines around it, within a voxel and a half along
+  // each axis.
+  std::vector<std::size_t> unplaced;
+  std::vector<Vec3> around;
+  for(std::size_t i = 0; i < outside.size(); ++i)
+    if(!placed[i])
     {
-      skeleton[v].point = Point(points[v][0], points[v][1], points[v][2]);
+      unplaced.push_back(i);
+      around.push_back(on_surface[i]);
+    }
+  std::vector<bool> found;
+  const std::vector<Vec3> nearby =
+      inside_points_in_cubes(lines, around, with_neighbours_half_width, Inside_piece_choice::nearest, found);
+  for(std::size_t k = 0; k < unplaced.size(); ++k)
+    if(found[k])
+    {
+      const std::size_t v = outside[unplaced[k]];
+      const Vec3 w = frame.to_world(nearby[k]);
+      skeleton[v].point = Point(w[0], w[1], w[2]);
       moved.push_back(v);
     }
+  std::sort(moved.begin(), moved.end());
   return moved;
 }
 

@@ -249,12 +249,17 @@ public:
     return Line_hits(std::move(first_hit), std::move(hits));
   }
 
-private:
-  // The unit cells [lo, hi] (integer parts of the coordinates) that a triangle's box covers.
+  // The unit cells [lo, hi] (integer parts of the coordinates) that a triangle's box covers;
+  // empty (lo > hi) for a triangle that is not finite or far beyond any grid.
   struct Cell_box
   {
     std::int32_t lo[3], hi[3];
   };
+
+  const std::vector<Triangle3>& triangles() const { return m_g; }
+  const Cell_box& cells_of(std::size_t triangle) const { return m_cells[triangle]; }
+
+private:
   static constexpr double cell_bound = 1e9;
 
   std::vector<Triangle3> m_g;
@@ -319,6 +324,11 @@ inline std::vector<Point_side> sides_of_points(const Grid_line_crossings& g, con
   }
   return side;
 }
+
+// The half-widths (voxels) of the cubes that inside_points_in_cubes() searches around a
+// voxel centre: the voxel itself, or the voxel and its 26 neighbours.
+constexpr double own_voxel_half_width = 0.5;
+constexpr double with_neighbours_half_width = 1.5;
 
 // How inside_points_in_cubes() chooses among the inside pieces of its lines.
 enum class Inside_piece_choice { longest, nearest };

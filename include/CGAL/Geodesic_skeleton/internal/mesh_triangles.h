@@ -115,13 +115,6 @@ std::size_t close_holes(const FaceGraph& mesh, VertexPointMap vpm, std::vector<T
   return holes;
 }
 
-// The triangles that voxelize() rasterised, for the later inside tests of the pipeline:
-// the faces' then the hole-filling fans', in the grid coordinates of the voxels' frame.
-struct Rasterised_triangles
-{
-  std::vector<Triangle3> in_grid;
-};
-
 // Moves the triangles into grid coordinates (`frame.to_grid` of their corners), in place:
 // a copy would be as large as the mesh.
 inline void to_grid(std::vector<Triangle3>& triangles, const Voxel_frame& frame)
@@ -143,32 +136,6 @@ Grid_line_crossings mesh_grid_lines(const FaceGraph& mesh, VertexPointMap vpm, c
   to_grid(triangles, frame);
   return Grid_line_crossings(std::move(triangles));
 }
-
-// mesh_grid_lines(), built on first use: the stages that need inside tests only sometimes
-// (cut_spurious_cycles()) pay nothing otherwise.
-template <typename FaceGraph, typename VertexPointMap>
-class Lazy_mesh_grid_lines
-{
-public:
-  Lazy_mesh_grid_lines(const FaceGraph& mesh, VertexPointMap vpm, const Voxel_frame& frame, bool fill_holes,
-                       const char* caller)
-    : m_mesh(mesh), m_vpm(vpm), m_frame(frame), m_fill_holes(fill_holes), m_caller(caller)
-  {}
-  Grid_line_crossings& operator()()
-  {
-    if(!m_lines)
-      m_lines.emplace(mesh_grid_lines(m_mesh, m_vpm, m_frame, m_fill_holes, m_caller));
-    return *m_lines;
-  }
-
-private:
-  const FaceGraph& m_mesh;
-  VertexPointMap m_vpm;
-  Voxel_frame m_frame;
-  bool m_fill_holes;
-  const char* m_caller;
-  std::optional<Grid_line_crossings> m_lines;
-};
 
 } // namespace internal
 } // namespace Geodesic_skeleton

@@ -19,6 +19,10 @@ CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(resolution)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(memory_limit)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(fill_holes)
 
+// voxelize (output); to_graph, cut_spurious_cycles, move_skeleton_inside (input)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(voxelized_surface_output)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(voxelized_surface)
+
 // prune_skeleton
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(mat_radius_map)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(spur_length_factor)
