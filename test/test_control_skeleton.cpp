@@ -1,26 +1,42 @@
 // Specification of smooth_skeleton.h, chord_to_point_distance_accumulation.h and
-// split_into_bones.h, on hand-made curve skeletons (polylines with a MAT radius).
+// split_into_bones.h, on hand-made curve skeletons (polylines with a MAT radius), and of
+// their point and radius maps on CGAL's mean curvature flow skeleton and on the package's
+// curve skeleton of a demo mesh.
 #include <CGAL/Geodesic_skeleton/Control_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
 #include <CGAL/Geodesic_skeleton/chord_to_point_distance_accumulation.h>
+#include <CGAL/Geodesic_skeleton/extract_control_skeleton.h>
 #include <CGAL/Geodesic_skeleton/smooth_skeleton.h>
 #include <CGAL/Geodesic_skeleton/split_into_bones.h>
 
+#include <Geodesic_skeleton_test/shapes.h>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Mean_curvature_flow_skeletonization.h>
 #include <CGAL/Random.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/extract_mean_curvature_flow_skeleton.h>
+#include <CGAL/property_map.h>
 
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
+#include <utility>
 #include <vector>
 
 namespace gs = CGAL::Geodesic_skeleton;
+namespace test = Geodesic_skeleton_test;
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Skeleton = gs::Curve_skeleton<Point, int>;
 using Control = gs::Control_skeleton<Point>;
+using Mesh = CGAL::Surface_mesh<Point>;
+using Mcf_skeleton = CGAL::Mean_curvature_flow_skeletonization<Mesh>::Skeleton;
+using Mesh_skeleton = gs::Curve_skeleton<Point, boost::graph_traits<Mesh>::vertex_descriptor>;
 
 namespace {
 
@@ -108,6 +124,75 @@ void check_tree(const Control& c)
     BOOST_TEST(distance(bone.points.front(), c.joints[bone.parent].point) < 1e-9);
     BOOST_TEST(distance(bone.points.back(), c.joints[bone.child].point) < 1e-9);
   }
+}
+
+// Whether two control skeletons are the same, to the last bit.
+bool identical(const Control& a, const Control& b)
+{
+  auto same_bones = [](const std::vector<gs::Control_bone<Point>>& x, const std::vector<gs::Control_bone<Point>>& y) {
+    return std::equal(x.begin(), x.end(), y.begin(), y.end(), [](const auto& p, const auto& q) {
+      return p.parent == q.parent && p.child == q.child && p.points == q.points && p.length == q.length;
+    });
+  };
+  return std::equal(a.joints.begin(), a.joints.end(), b.joints.begin(), b.joints.end(),
+                    [](const auto& p, const auto& q) {
+                      return p.point == q.point && p.radius == q.radius && p.kind == q.kind &&
+                             p.parent == q.parent && p.skeleton_vertex == q.skeleton_vertex;
+                    }) &&
+         same_bones(a.bones, b.bones) && same_bones(a.cut_bones, b.cut_bones) && a.roots == b.roots;
+}
+
+// CGAL's mean curvature flow skeleton of cow.off, computed once (1-3 s).
+struct Mcf_of_cow
+{
+  Mesh mesh = test::demo_mesh<Mesh>("cow.off");
+  Mcf_skeleton skeleton;
+  Mcf_of_cow() { CGAL::extract_mean_curvature_flow_skeleton(mesh, skeleton); }
+};
+
+const Mcf_of_cow& mcf_of_cow()
+{
+  static const Mcf_of_cow mcf;
+  return mcf;
+}
+
+// A MAT radius for an MCF skeleton, which has none: the mean distance from each skeleton
+// point to the mesh points collapsed into it; a skeleton vertex without mesh vertices (a
+// few on the cow) takes the mean radius of its neighbours that have one.
+std::vector<double> mean_distance_to_collapsed_vertices(const Mcf_of_cow& mcf)
+{
+  const Mcf_skeleton& s = mcf.skeleton;
+  std::vector<double> radii(num_vertices(s), 0.0);
+  std::vector<bool> known(radii.size(), false);
+  for(std::size_t v = 0; v < radii.size(); ++v)
+  {
+    for(const auto& w : s[v].vertices)
+      radii[v] += distance(s[v].point, mcf.mesh.point(w)) / double(s[v].vertices.size());
+    known[v] = !s[v].vertices.empty();
+  }
+  for(bool changed = true; changed;)
+  {
+    changed = false;
+    for(std::size_t v = 0; v < radii.size(); ++v)
+    {
+      if(known[v])
+        continue;
+      double sum = 0;
+      int count = 0;
+      for(auto w : boost::make_iterator_range(boost::adjacent_vertices(v, s)))
+        if(known[w])
+        {
+          sum += radii[w];
+          ++count;
+        }
+      if(count > 0)
+      {
+        radii[v] = sum / count;
+        known[v] = changed = true;
+      }
+    }
+  }
+  return radii;
 }
 
 } // namespace
@@ -347,9 +432,225 @@ BOOST_AUTO_TEST_CASE(bad_parameters_throw)
   BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::chord_length_factors(std::vector<double>{})),
                     std::invalid_argument);
   BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::minimum_bone_length_factor(-1.0)), std::invalid_argument);
+  for(double bad : {-1.0, std::nan(""), HUGE_VAL})
+  {
+    std::vector<double> radii(num_vertices(s), 2.0);
+    radii[3] = bad;
+    BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::mat_radius_map(CGAL::make_property_map(radii))),
+                      std::invalid_argument);
+  }
   Skeleton empty;
   gs::split_into_bones(empty, c);
   BOOST_TEST(c.joints.empty());
+}
+
+// --- point and radius maps ------------------------------------------------------------
+
+// The call that must not compile, a split without radius, is refused by this condition.
+static_assert(!gs::internal::has_radius_map<Mcf_skeleton, CGAL::parameters::Default_named_parameters>(),
+              "an MCF skeleton has no radius of its own");
+static_assert(gs::internal::has_radius_map<
+                  Mcf_skeleton, decltype(gs::parameters::mat_radius_map(CGAL::make_property_map(std::vector<double>())))>(),
+              "a mat_radius_map gives an MCF skeleton its radius");
+static_assert(gs::internal::has_radius_map<Mesh_skeleton, CGAL::parameters::Default_named_parameters>(),
+              "the package's curve skeleton has a radius member");
+
+BOOST_AUTO_TEST_CASE(an_mcf_skeleton_smooths_and_splits_with_a_user_radius_map)
+{
+  const Mcf_of_cow& mcf = mcf_of_cow();
+  const Mcf_skeleton& original = mcf.skeleton;
+  Mcf_skeleton s = original;
+  const std::size_t n = num_vertices(s);
+  BOOST_REQUIRE(n > 50u);
+  const std::vector<double> radii_before = mean_distance_to_collapsed_vertices(mcf);
+  std::vector<double> radii = radii_before;
+  BOOST_REQUIRE(*std::min_element(radii.begin(), radii.end()) > 0.0);
+  const auto radius_map = CGAL::make_property_map(radii);
+
+  gs::smooth_skeleton(s, gs::parameters::mat_radius_map(radius_map));
+  Control c;
+  gs::split_into_bones(s, c, gs::parameters::mat_radius_map(radius_map));
+  check_tree(c);
+  BOOST_TEST(c.roots.size() == 1u); // the cow is one piece
+  BOOST_TEST((radii != radii_before)); // smoothing wrote the interior radii through the map
+
+  // The end points and junctions of the MCF skeleton are joints, where the MCF put them,
+  // with the radius of the map; the other joints are bends.
+  std::size_t ends = 0, junctions = 0;
+  std::map<std::size_t, const gs::Control_joint<Point>*> joint_at;
+  for(const auto& j : c.joints)
+  {
+    BOOST_TEST(joint_at.emplace(j.skeleton_vertex, &j).second, "one joint per skeleton vertex");
+    BOOST_TEST(j.radius == radii[j.skeleton_vertex]);
+  }
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    const std::size_t d = boost::degree(v, original);
+    BOOST_TEST(d > 0u);
+    if(d == 2)
+      continue;
+    ++(d == 1 ? ends : junctions);
+    BOOST_TEST_CONTEXT("skeleton vertex " << v << " of degree " << d)
+    {
+      BOOST_REQUIRE(joint_at.count(v) == 1u);
+      const auto& j = *joint_at[v];
+      BOOST_TEST(j.point == original[v].point);
+      BOOST_TEST(j.radius == radii_before[v]);
+      if(d == 1)
+        BOOST_TEST((j.kind == gs::Joint_kind::end));
+      else
+        BOOST_TEST((j.kind == gs::Joint_kind::junction || j.kind == gs::Joint_kind::root));
+    }
+  }
+  BOOST_TEST(ends >= 5u); // four legs and the head, at least
+  BOOST_TEST(junctions >= 2u);
+  std::size_t bends = 0;
+  for(const auto& j : c.joints)
+    bends += j.kind == gs::Joint_kind::bend;
+  BOOST_TEST(c.joints.size() == ends + junctions + bends);
+  BOOST_TEST((c.joints[c.roots[0]].kind == gs::Joint_kind::root && boost::degree(c.joints[c.roots[0]].skeleton_vertex, s) >= 3u));
+
+  // Every bone runs along skeleton points, and the bones cover each skeleton edge once.
+  std::set<Point> skeleton_points;
+  for(std::size_t v = 0; v < n; ++v)
+    skeleton_points.insert(s[v].point);
+  std::size_t bone_edges = 0;
+  for(const auto* bones : {&c.bones, &c.cut_bones})
+    for(const auto& bone : *bones)
+    {
+      BOOST_TEST(bone.points.size() >= 2u);
+      bone_edges += bone.points.size() - 1;
+      for(const Point& p : bone.points)
+        BOOST_TEST(skeleton_points.count(p) == 1u, "bone point " << p << " is a skeleton point");
+      BOOST_TEST(bone.points.front() == s[c.joints[bone.parent].skeleton_vertex].point);
+      BOOST_TEST(bone.points.back() == s[c.joints[bone.child].skeleton_vertex].point);
+    }
+  BOOST_TEST(bone_edges == num_edges(s));
+}
+
+BOOST_AUTO_TEST_CASE(smoothing_an_mcf_skeleton_without_radius_moves_its_interior_points_only)
+{
+  const Mcf_skeleton& original = mcf_of_cow().skeleton;
+  Mcf_skeleton s = original;
+  gs::smooth_skeleton(s); // the points only: the MCF skeleton has no radius
+  const std::size_t n = num_vertices(s);
+  std::size_t moved = 0;
+  long checked = -1;
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    BOOST_TEST((s[v].vertices == original[v].vertices));
+    if(boost::degree(v, s) != 2)
+    {
+      BOOST_TEST(s[v].point == original[v].point, "end or junction " << v << " stays");
+      continue;
+    }
+    moved += s[v].point != original[v].point;
+    // A point two steps or more from both ends of its branch averages the 5 around it.
+    std::vector<std::size_t> window{v};
+    bool inner = true;
+    for(auto w : boost::make_iterator_range(boost::adjacent_vertices(v, s)))
+    {
+      std::size_t previous = v, current = std::size_t(w);
+      window.push_back(current);
+      inner = inner && boost::degree(current, s) == 2;
+      if(!inner)
+        break;
+      for(auto x : boost::make_iterator_range(boost::adjacent_vertices(current, s)))
+        if(std::size_t(x) != previous)
+          window.push_back(std::size_t(x));
+    }
+    if(checked >= 0 || !inner || window.size() != 5 || std::set<std::size_t>(window.begin(), window.end()).size() != 5)
+      continue;
+    checked = long(v);
+    double x = 0, y = 0, z = 0;
+    for(std::size_t w : window)
+    {
+      x += original[w].point.x() / 5;
+      y += original[w].point.y() / 5;
+      z += original[w].point.z() / 5;
+    }
+    BOOST_TEST(distance(s[v].point, Point(x, y, z)) < 1e-12 * (1 + distance(Point(0, 0, 0), Point(x, y, z))));
+  }
+  BOOST_TEST(moved > 0u);
+  BOOST_TEST(checked >= 0);
+}
+
+BOOST_AUTO_TEST_CASE(default_maps_given_explicitly_change_nothing_and_doubled_radii_double_the_joints_radii)
+{
+  using Vertex = gs::Curve_skeleton_vertex<Point, boost::graph_traits<Mesh>::vertex_descriptor>;
+  const Mesh cow = test::demo_mesh<Mesh>("cow.off");
+  Control extracted;
+  Mesh_skeleton curve;
+  gs::extract_control_skeleton(cow, extracted, gs::parameters::curve_skeleton_output(&curve));
+  const std::size_t n = num_vertices(curve);
+  BOOST_REQUIRE(n > 50u);
+
+  // split_into_bones: the chain's own call, the call without maps and with the default
+  // maps named give the same control skeleton.
+  Control by_default, with_maps;
+  gs::split_into_bones(curve, by_default);
+  gs::split_into_bones(curve, with_maps,
+                       gs::parameters::combine(gs::parameters::vertex_point_map(get(&Vertex::point, std::as_const(curve))),
+                                               gs::parameters::mat_radius_map(get(&Vertex::radius, std::as_const(curve)))));
+  BOOST_TEST(by_default.joints.size() > 10u);
+  BOOST_TEST(identical(by_default, extracted));
+  BOOST_TEST(identical(by_default, with_maps));
+
+  // smooth_skeleton: the same.
+  Mesh_skeleton smoothed = curve, smoothed_with_maps = curve;
+  gs::smooth_skeleton(smoothed);
+  gs::smooth_skeleton(smoothed_with_maps,
+                      gs::parameters::combine(gs::parameters::vertex_point_map(get(&Vertex::point, smoothed_with_maps)),
+                                              gs::parameters::mat_radius_map(get(&Vertex::radius, smoothed_with_maps))));
+  std::size_t changed = 0;
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    BOOST_TEST(smoothed[v].point == smoothed_with_maps[v].point);
+    BOOST_TEST(smoothed[v].radius == smoothed_with_maps[v].radius);
+    changed += smoothed[v].point != curve[v].point || smoothed[v].radius != curve[v].radius;
+  }
+  BOOST_TEST(changed > 0u); // a second smoothing still moves points: the comparison is not empty
+
+  // Radii doubled: the same ends and junctions, each with twice the radius; the bends
+  // (their lengths are in radii) move or go.
+  std::vector<double> doubled(n);
+  for(std::size_t v = 0; v < n; ++v)
+    doubled[v] = 2 * curve[v].radius;
+  Control twice;
+  gs::split_into_bones(curve, twice, gs::parameters::mat_radius_map(CGAL::make_property_map(doubled)));
+  check_tree(twice);
+  BOOST_TEST(!identical(twice, by_default));
+  std::map<std::size_t, double> node_radius;
+  for(const auto& j : by_default.joints)
+    if(j.kind != gs::Joint_kind::bend)
+      node_radius[j.skeleton_vertex] = j.radius;
+  std::size_t nodes = 0;
+  for(const auto& j : twice.joints)
+  {
+    BOOST_TEST(j.radius == 2 * curve[j.skeleton_vertex].radius);
+    if(j.kind == gs::Joint_kind::bend)
+      continue;
+    ++nodes;
+    BOOST_REQUIRE(node_radius.count(j.skeleton_vertex) == 1u);
+    BOOST_TEST(j.radius == 2 * node_radius[j.skeleton_vertex]);
+    BOOST_TEST(j.radius > 0.0);
+  }
+  BOOST_TEST(nodes == node_radius.size());
+  BOOST_TEST_MESSAGE("cow: " << by_default.joints.size() << " joints, " << twice.joints.size()
+                             << " with the radii doubled");
+}
+
+BOOST_AUTO_TEST_CASE(the_chain_reads_the_mesh_vertex_point_map_and_the_skeleton_maps_apart)
+{
+  // extract_control_skeleton() passes its named parameters on; the mesh's
+  // vertex_point_map must not reach the curve-skeleton stages, whose keys are skeleton
+  // vertices.
+  const Mesh cow = test::demo_mesh<Mesh>("cow.off");
+  Control plain, with_mesh_map;
+  gs::extract_control_skeleton(cow, plain);
+  gs::extract_control_skeleton(cow, with_mesh_map, gs::parameters::vertex_point_map(get(CGAL::vertex_point, cow)));
+  BOOST_TEST(!plain.joints.empty());
+  BOOST_TEST(identical(plain, with_mesh_map));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -192,7 +192,9 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 ///   `small_piece_fraction` of `remove_small_pieces()`;
 ///   `spur_length_factor` of `prune_skeleton()`; `smoothing_window` of
 ///   `smooth_skeleton()`; `bend_threshold`, `straightness_tolerance`,
-///   `minimum_bone_length_factor`, `chord_length_factors` of `split_into_bones()`), and:
+///   `minimum_bone_length_factor`, `chord_length_factors` of `split_into_bones()`; the
+///   `vertex_point_map` is the mesh's: the curve-skeleton stages read the curve skeleton's
+///   own points and radii, and a `mat_radius_map` is not passed on), and:
 ///   - `visitor`: an object with `stage_finished(stage, milliseconds)`, called after each
 ///     stage (default: `Default_pipeline_visitor`). It is copied: keep its state behind a
 ///     pointer or a reference.
@@ -285,7 +287,11 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   report.pruned = skeleton_statistics(curve);
   clock.finished("to_graph");
 
-  smooth_skeleton(curve, np);
+  // The curve skeleton's own maps, ahead of np: a vertex_point_map in np is the mesh's.
+  using Curve_vertex = Curve_skeleton_vertex<Point, vertex_descriptor>;
+  const auto curve_np = parameters::combine(parameters::vertex_point_map(get(&Curve_vertex::point, curve)),
+                                            parameters::mat_radius_map(get(&Curve_vertex::radius, curve)), np);
+  smooth_skeleton(curve, curve_np);
   clock.finished("smooth");
 
   const std::vector<std::size_t> moved_inside = move_skeleton_inside(mesh, curve, with_surface);
@@ -293,7 +299,7 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   surface = Voxelized_surface(); // as large as the mesh
   clock.finished("curve_points_inside");
 
-  split_into_bones(curve, out, np);
+  split_into_bones(curve, out, curve_np);
   report.joints_moved_inside = internal::joints_on_vertices(out, moved_inside);
   clock.finished("split_into_bones");
   if(Skeleton* curve_output = internal::output_pointer<Skeleton>(np, internal_np::curve_skeleton_output_tag))

@@ -10,15 +10,19 @@
 
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/internal/skeleton_branches.h>
+#include <CGAL/Geodesic_skeleton/internal/skeleton_vertex_maps.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
 #include <CGAL/number_utils.h>
+
+#include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -27,8 +31,9 @@ namespace Geodesic_skeleton {
 /// \ingroup PkgGeodesicSkeletonRef
 /// Smooths a curve skeleton in place: every point that is neither an end point nor a
 /// junction moves to the average of the `window` consecutive points centred on it along
-/// its branch (paper, equation 3, with a window of 5); its MAT radius is averaged the same
-/// way. End points and junctions (vertices of degree other than 2) stay where they are.
+/// its branch (paper, equation 3, with a window of 5); its MAT radius, when the skeleton
+/// has one, is averaged the same way. End points and junctions (vertices of degree other
+/// than 2) stay where they are.
 ///
 /// Near the ends of a branch the window shrinks symmetrically: the point at index i of a
 /// branch of N points (nodes at 0 and N-1) averages the 2h+1 points around it with
@@ -37,11 +42,26 @@ namespace Geodesic_skeleton {
 /// without any junction wraps around, with the window capped to the loop's length. Every
 /// average uses the positions before smoothing (one pass of equation 3).
 ///
-/// \tparam CurveSkeleton a `boost::adjacency_list` with `vecS` vertex storage whose vertex
-///         bundle has a `point` (a CGAL point type) and a `radius` (`double`), e.g.
-///         `Curve_skeleton<Point, MeshVertex>`.
+/// The points and radii are read and written through property maps, so the skeleton of
+/// `CGAL::extract_mean_curvature_flow_skeleton()`
+/// (`CGAL::Mean_curvature_flow_skeletonization<TriangleMesh>::Skeleton`, whose vertices
+/// have a `point` and no radius) is smoothed as it is: its points only, or its points and
+/// the radii of a `mat_radius_map` that the caller gives.
+///
+/// \tparam CurveSkeleton a `boost::adjacency_list` with `vecS` vertex storage (its vertex
+///         descriptors are the indices 0 to N-1), e.g. `Curve_skeleton<Point, MeshVertex>`
+///         or `CGAL::Mean_curvature_flow_skeletonization<TriangleMesh>::Skeleton`. Its
+///         vertex bundle has a `point` member (a CGAL point type) unless a
+///         `vertex_point_map` is given.
 /// \param skeleton the skeleton, smoothed in place; its graph is not changed.
 /// \param np optional named parameters among:
+///   - `vertex_point_map`: a read-write property map from the skeleton's vertex descriptor
+///     to its point, a CGAL point type constructible from three `double`s (default:
+///     `get(&Bundle::point, skeleton)`, the bundle's `point` member).
+///   - `mat_radius_map` (package parameter): a read-write property map from the skeleton's
+///     vertex descriptor to the MAT radius there, a `double` in world units (default:
+///     `get(&Bundle::radius, skeleton)` when the vertex bundle has a `radius` member, as
+///     `Curve_skeleton_vertex` has; otherwise none, and only the points are smoothed).
 ///   - `smoothing_window` (package parameter): the number of consecutive points averaged,
 ///     an odd number in [1, 1001] (default: 5, the paper's); 1 changes nothing.
 ///
@@ -54,7 +74,6 @@ void smooth_skeleton(CurveSkeleton& skeleton,
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  using Point = decltype(skeleton[0].point);
 
   const int window = internal::checked_parameter(
       parameter_ranges::smoothing_window,
@@ -63,14 +82,21 @@ void smooth_skeleton(CurveSkeleton& skeleton,
       "smooth_skeleton");
   const int half = window / 2;
 
-  // Positions before smoothing: x, y, z, radius.
+  auto point_map = internal::skeleton_point_map(skeleton, np);
+  using Point = typename boost::property_traits<decltype(point_map)>::value_type;
+  auto radius_map = internal::skeleton_radius_map(skeleton, np);
+  constexpr bool with_radius = !std::is_same_v<decltype(radius_map), internal::No_radius_map>;
+
+  // Positions before smoothing: x, y, z, radius (0 without radius map).
   const std::size_t n = num_vertices(skeleton);
   std::vector<std::array<double, 4>> before(n);
   for(std::size_t v = 0; v < n; ++v)
   {
-    const Point& p = skeleton[v].point;
-    before[v] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()),
-                 skeleton[v].radius};
+    const Point p = get(point_map, v);
+    double radius = 0;
+    if constexpr(with_radius)
+      radius = static_cast<double>(get(radius_map, v));
+    before[v] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()), radius};
   }
   auto set_average = [&](std::size_t v, const std::vector<std::size_t>& points) {
     std::array<double, 4> sum{0, 0, 0, 0};
@@ -78,8 +104,9 @@ void smooth_skeleton(CurveSkeleton& skeleton,
       for(int c = 0; c < 4; ++c)
         sum[c] += before[w][c];
     const double count = static_cast<double>(points.size());
-    skeleton[v].point = Point(sum[0] / count, sum[1] / count, sum[2] / count);
-    skeleton[v].radius = sum[3] / count;
+    put(point_map, v, Point(sum[0] / count, sum[1] / count, sum[2] / count));
+    if constexpr(with_radius)
+      put(radius_map, v, sum[3] / count);
   };
 
   for(const internal::Skeleton_branch& branch : internal::skeleton_branches(skeleton))

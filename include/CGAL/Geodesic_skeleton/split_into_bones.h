@@ -12,6 +12,7 @@
 #include <CGAL/Geodesic_skeleton/internal/bone_splitting.h>
 #include <CGAL/Geodesic_skeleton/internal/control_tree.h>
 #include <CGAL/Geodesic_skeleton/internal/skeleton_branches.h>
+#include <CGAL/Geodesic_skeleton/internal/skeleton_vertex_maps.h>
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
@@ -54,6 +55,93 @@ Bone_splitting_settings bone_splitting_settings(const NamedParameters& np,
   return s;
 }
 
+// Algorithm 2 on a skeleton read through its point and radius maps: the body of
+// split_into_bones(), with the settings checked and `control` cleared; throws when a
+// radius is negative or not finite.
+template <typename CurveSkeleton, typename VertexPointMap, typename RadiusMap, typename Point>
+void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPointMap& point_map,
+                                const RadiusMap& radius_map, const Bone_splitting_settings& settings,
+                                Control_skeleton<Point>& control)
+{
+  const std::size_t n = num_vertices(skeleton);
+  if(n == 0)
+    return;
+
+  std::vector<double> radii_of(n);
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    radii_of[v] = static_cast<double>(get(radius_map, v));
+    if(!(radii_of[v] >= 0) || !std::isfinite(radii_of[v]))
+      throw std::invalid_argument("split_into_bones: the MAT radius map gives a negative or "
+                                  "non-finite radius");
+  }
+  auto radius = [&](std::size_t v) { return radii_of[v]; };
+  Joint_graph<Point> graph;
+  std::vector<long> joint_of(n, -1);
+  auto position = [&](std::size_t v) {
+    const auto p = get(point_map, v);
+    return Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+  };
+  auto add_joint = [&](std::size_t v, Joint_kind kind) {
+    if(joint_of[v] < 0)
+    {
+      const Vec3 p = position(v);
+      Control_joint<Point> joint;
+      joint.point = Point(p[0], p[1], p[2]);
+      joint.radius = radius(v);
+      joint.kind = kind;
+      joint.skeleton_vertex = v;
+      joint_of[v] = static_cast<long>(graph.joints.size());
+      graph.joints.push_back(joint);
+    }
+    return static_cast<std::size_t>(joint_of[v]);
+  };
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    const std::size_t d = boost::degree(v, skeleton);
+    if(d != 2)
+      add_joint(v, d >= 3 ? Joint_kind::junction : Joint_kind::end);
+  }
+
+  for(Skeleton_branch branch : skeleton_branches(skeleton))
+  {
+    std::vector<std::size_t>& b = branch.vertices;
+    if(branch.closed) // start and end the loop at its thickest vertex, a joint
+    {
+      std::size_t thickest = 0;
+      for(std::size_t k = 1; k < b.size(); ++k)
+        if(radius(b[k]) > radius(b[thickest]))
+          thickest = k;
+      std::rotate(b.begin(), b.begin() + static_cast<long>(thickest), b.end());
+      b.push_back(b.front());
+      add_joint(b.front(), Joint_kind::bend);
+    }
+    std::vector<Vec3> points;
+    std::vector<double> radii;
+    for(std::size_t v : b)
+    {
+      points.push_back(position(v));
+      radii.push_back(radius(v));
+    }
+    Branch_splitter splitter(points, radii, settings);
+    const std::vector<std::size_t> cuts = splitter.joints();
+    for(std::size_t c = 0; c + 1 < cuts.size(); ++c)
+    {
+      Control_bone<Point> bone;
+      bone.parent = add_joint(b[cuts[c]], Joint_kind::bend);
+      bone.child = add_joint(b[cuts[c + 1]], Joint_kind::bend);
+      for(std::size_t k = cuts[c]; k <= cuts[c + 1]; ++k)
+      {
+        bone.points.emplace_back(points[k][0], points[k][1], points[k][2]);
+        if(k > cuts[c])
+          bone.length += norm3(sub(points[k], points[k - 1]));
+      }
+      graph.bones.push_back(std::move(bone));
+    }
+  }
+  control = root_joint_graph(graph);
+}
+
 } // namespace internal
 
 /// \ingroup PkgGeodesicSkeletonRef
@@ -80,14 +168,36 @@ Bone_splitting_settings bone_splitting_settings(const NamedParameters& np,
 ///    the shape has handles, the bones left off those paths (one per independent cycle)
 ///    are recorded in `Control_skeleton::cut_bones`.
 ///
-/// \tparam CurveSkeleton a `boost::adjacency_list` with `vecS` vertex storage whose vertex
-///         bundle has a `point` (a CGAL point) and a `radius` (`double`, world units), e.g.
-///         `Curve_skeleton<Point, MeshVertex>`, usually after `smooth_skeleton()`.
+/// The points and radii are read through property maps, so the skeleton of
+/// `CGAL::extract_mean_curvature_flow_skeleton()`
+/// (`CGAL::Mean_curvature_flow_skeletonization<TriangleMesh>::Skeleton`, whose vertices
+/// have a `point` and no radius) splits as well, with a `mat_radius_map` that the caller
+/// gives: every length of the split is in MAT radii, so a radius is required, and a call
+/// on a skeleton without `radius` member and without `mat_radius_map` does not compile
+/// (a `static_assert` names `mat_radius_map`). For an MCF skeleton, the mean distance from
+/// a skeleton vertex's point to the points of the mesh vertices collapsed into it (its
+/// `vertices`) is a radius that suits.
+///
+/// \tparam CurveSkeleton a `boost::adjacency_list` with `vecS` vertex storage (its vertex
+///         descriptors are the indices 0 to N-1), e.g. `Curve_skeleton<Point, MeshVertex>`
+///         or `CGAL::Mean_curvature_flow_skeletonization<TriangleMesh>::Skeleton`, usually
+///         after `smooth_skeleton()`. Its vertex bundle has a `point` member (a CGAL point)
+///         unless a `vertex_point_map` is given, and a `radius` member (`double`, world
+///         units) unless a `mat_radius_map` is given.
 /// \tparam Point the point type of the output.
 /// \param skeleton the curve skeleton.
 /// \param control receives the control skeleton (cleared first); empty for an empty
-///        skeleton.
+///        skeleton. `Control_joint::skeleton_vertex` is the vertex descriptor (index) of
+///        the joint's vertex in `skeleton`.
 /// \param np optional named parameters among:
+///   - `vertex_point_map`: a readable property map from the skeleton's vertex descriptor
+///     to its point, a CGAL point type (default: `get(&Bundle::point, skeleton)`, the
+///     bundle's `point` member).
+///   - `mat_radius_map` (package parameter): a readable property map from the skeleton's
+///     vertex descriptor to the MAT radius there, a `double` in world units; the joints'
+///     radii and every length of the split (chords, straightness, shortest bone) come from
+///     it (default: `get(&Bundle::radius, skeleton)` when the vertex bundle has a `radius`
+///     member, as `Curve_skeleton_vertex` has; otherwise required).
 ///   - `bend_threshold` (package parameter): the accumulation, in chord lengths, that
 ///     makes a bend a joint, in [0, 1] (default 0.08: a corner turning by 28 degrees
 ///     reaches it; 20 degrees give 0.058, a right angle 0.217).
@@ -97,7 +207,8 @@ Bone_splitting_settings bone_splitting_settings(const NamedParameters& np,
 ///   - `chord_length_factors` (package parameter): a `std::vector<double>` of chord
 ///     lengths in MAT radii, each in [0.001, 1000] (default {3, 6}).
 ///
-/// \throws std::invalid_argument when a parameter is out of range.
+/// \throws std::invalid_argument when a parameter is out of range or the radius map gives
+///         a negative or non-finite radius.
 ///
 /// \b Complexity: O(N log N * c) for N skeleton vertices and c chords per point in
 /// practice (each recursion level scans its part), plus O(J B log B) to root the J joints
@@ -107,76 +218,15 @@ template <typename CurveSkeleton, typename Point,
 void split_into_bones(const CurveSkeleton& skeleton, Control_skeleton<Point>& control,
                       const NamedParameters& np = CGAL::parameters::default_values())
 {
+  static_assert(internal::has_radius_map<CurveSkeleton, NamedParameters>(),
+                "split_into_bones: the skeleton's vertex bundle has no `radius` member (e.g. the "
+                "skeleton of CGAL::Mean_curvature_flow_skeletonization): give its MAT radii with "
+                "the named parameter mat_radius_map");
   const internal::Bone_splitting_settings settings = internal::bone_splitting_settings(np);
   control.clear();
-  const std::size_t n = num_vertices(skeleton);
-  if(n == 0)
-    return;
-
-  internal::Joint_graph<Point> graph;
-  std::vector<long> joint_of(n, -1);
-  auto position = [&](std::size_t v) {
-    const auto& p = skeleton[v].point;
-    return internal::Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-  };
-  auto add_joint = [&](std::size_t v, Joint_kind kind) {
-    if(joint_of[v] < 0)
-    {
-      const internal::Vec3 p = position(v);
-      Control_joint<Point> joint;
-      joint.point = Point(p[0], p[1], p[2]);
-      joint.radius = skeleton[v].radius;
-      joint.kind = kind;
-      joint.skeleton_vertex = v;
-      joint_of[v] = static_cast<long>(graph.joints.size());
-      graph.joints.push_back(joint);
-    }
-    return static_cast<std::size_t>(joint_of[v]);
-  };
-  for(std::size_t v = 0; v < n; ++v)
-  {
-    const std::size_t d = boost::degree(v, skeleton);
-    if(d != 2)
-      add_joint(v, d >= 3 ? Joint_kind::junction : Joint_kind::end);
-  }
-
-  for(internal::Skeleton_branch branch : internal::skeleton_branches(skeleton))
-  {
-    std::vector<std::size_t>& b = branch.vertices;
-    if(branch.closed) // start and end the loop at its thickest vertex, a joint
-    {
-      std::size_t thickest = 0;
-      for(std::size_t k = 1; k < b.size(); ++k)
-        if(skeleton[b[k]].radius > skeleton[b[thickest]].radius)
-          thickest = k;
-      std::rotate(b.begin(), b.begin() + static_cast<long>(thickest), b.end());
-      b.push_back(b.front());
-      add_joint(b.front(), Joint_kind::bend);
-    }
-    std::vector<internal::Vec3> points;
-    std::vector<double> radii;
-    for(std::size_t v : b)
-    {
-      points.push_back(position(v));
-      radii.push_back(skeleton[v].radius);
-    }
-    internal::Branch_splitter splitter(points, radii, settings);
-    const std::vector<std::size_t> cuts = splitter.joints();
-    for(std::size_t c = 0; c + 1 < cuts.size(); ++c)
-    {
-      Control_bone<Point> bone;
-      bone.parent = add_joint(b[cuts[c]], Joint_kind::bend);
-      bone.child = add_joint(b[cuts[c + 1]], Joint_kind::bend);
-      for(std::size_t k = cuts[c]; k <= cuts[c + 1]; ++k)
-      {
-        bone.points.emplace_back(points[k][0], points[k][1], points[k][2]);
-        if(k > cuts[c])
-          bone.length += internal::norm3(internal::sub(points[k], points[k - 1]));
-      }
-      graph.bones.push_back(std::move(bone));
-    }
-  }
-  control = internal::root_joint_graph(graph);
+  if constexpr(internal::has_radius_map<CurveSkeleton, NamedParameters>())
+    internal::split_into_bones_with_maps(skeleton, internal::skeleton_point_map(skeleton, np),
+                                         internal::skeleton_radius_map(skeleton, np), settings, control);
 }
 
 } // namespace Geodesic_skeleton
