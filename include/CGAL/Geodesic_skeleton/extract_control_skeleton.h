@@ -153,7 +153,7 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 /// good defaults. In order: `voxelize()` (solid interior on a grid aligned with the
 /// principal axes), `distance_transform()` (the MAT radius), `thin()` (grassfire, a
 /// one-voxel-thick curve skeleton), `prune_skeleton()` (the paper's Algorithm 1 and the
-/// snipping of spurious branches), `to_graph()` (the curve skeleton, with the mesh vertices
+/// package's addition to it, the snipping of spurious branches), `to_graph()` (the curve skeleton, with the mesh vertices
 /// mapped to it), `smooth_skeleton()` (5-point moving average) and `split_into_bones()`
 /// (joints and bones, rooted at the most central junction).
 ///

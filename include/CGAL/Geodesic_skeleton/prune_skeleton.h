@@ -6,7 +6,8 @@
 
 /// \file prune_skeleton.h
 /// The paper's pruning of a one-voxel-thick skeleton (Algorithm 1), followed by the
-/// iterative snipping of spurious end branches.
+/// iterative snipping of spurious end branches, which is the package's addition to
+/// Algorithm 1 (not in the paper).
 
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
@@ -37,7 +38,8 @@ struct Pruning_report
 
 /// \ingroup PkgGeodesicSkeletonRef
 /// Prunes a one-voxel-thick curve skeleton in place: the paper's Algorithm 1, then the
-/// snipping of spurious end branches that it calls for, repeated until nothing changes.
+/// snipping of spurious end branches (the package's addition to Algorithm 1, not in the
+/// paper), the two repeated until nothing changes.
 ///
 /// Algorithm 1: (1-2) the points are classified by their degree in the 26-neighbourhood
 /// (`classify_skeleton_points()`); (3) the branched connection points are grouped into
@@ -49,8 +51,12 @@ struct Pruning_report
 /// of length 1, sqrt 2 and sqrt 3: a geodesic inside the skeleton) gives a shortest path
 /// to each terminator; (8) the region points on no path are removed.
 ///
-/// Snipping (the paper's "iteratively snip off the spurious skeleton joints"): an end branch (the voxels from an end point to the first point of degree 3
-/// or more, the junction) is removed when its arc length is shorter than
+/// Snipping, the package's addition to Algorithm 1 (the paper has no such step: its
+/// introduction's "iteratively snip off the spurious skeleton joints" are the joints of
+/// the branched regions, which step 8 removes; Algorithm 1 removes only branched
+/// connection points, never an end branch, so it leaves short twigs): an end branch (the
+/// voxels from an end point to the first point of degree 3 or more, the junction) is
+/// removed when its arc length is shorter than
 /// `spur_length_factor` times the MAT radius at the junction, i.e. when it does not reach
 /// out of the thickness it grows from, as the twigs that surface noise makes do. Branches
 /// are snipped shortest first (relative to the radius), each only while three branches or
