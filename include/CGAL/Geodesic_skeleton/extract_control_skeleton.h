@@ -153,9 +153,10 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 /// good defaults. In order: `voxelize()` (solid interior on a grid aligned with the
 /// principal axes), `distance_transform()` (the MAT radius), `thin()` (grassfire, a
 /// one-voxel-thick curve skeleton), `prune_skeleton()` (the paper's Algorithm 1 and the
-/// package's addition to it, the snipping of spurious branches), `to_graph()` (the curve skeleton, with the mesh vertices
-/// mapped to it), `smooth_skeleton()` (5-point moving average) and `split_into_bones()`
-/// (joints and bones, rooted at the most central junction).
+/// package's addition to it, the snipping of spurious branches), `to_graph()` (the curve
+/// skeleton, with the mesh vertices mapped to it), `smooth_skeleton()` (5-point moving
+/// average) and `split_into_bones()` (joints and bones, rooted at the most central
+/// junction).
 ///
 /// Between `thin()` and `prune_skeleton()`, `remove_small_pieces()` removes the skeletons
 /// of the detached pieces whose solid is smaller than `small_piece_fraction` of the largest
