@@ -15,7 +15,7 @@
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
-#include <CGAL/Geodesic_skeleton/internal/simple_point.h>
+#include <CGAL/Geodesic_skeleton/internal/thin/simple_point.h>
 #include <CGAL/Geodesic_skeleton/thin.h>
 #include <CGAL/Geodesic_skeleton/to_graph.h>
 #include <CGAL/Geodesic_skeleton/voxelize.h>

@@ -1,8 +1,8 @@
 // Specification of CGAL/Geodesic_skeleton/cut_spurious_cycles.h.
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
 #include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>
-#include <CGAL/Geodesic_skeleton/internal/closed_mesh_interior.h>
-#include <CGAL/Geodesic_skeleton/internal/mesh_triangles.h>
+#include <CGAL/Geodesic_skeleton/internal/move_skeleton_inside/closed_mesh_interior.h>
+#include <CGAL/Geodesic_skeleton/internal/voxelize/mesh_triangles.h>
 #include <CGAL/Geodesic_skeleton/to_graph.h>
 
 #include <Geodesic_skeleton_test/shapes.h>

@@ -2,7 +2,7 @@
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
-#include <CGAL/Geodesic_skeleton/internal/simple_point.h>
+#include <CGAL/Geodesic_skeleton/internal/thin/simple_point.h>
 #include <CGAL/Geodesic_skeleton/thin.h>
 
 #include <Geodesic_skeleton_test/voxel_skeleton.h>

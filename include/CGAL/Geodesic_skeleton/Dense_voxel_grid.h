@@ -9,7 +9,7 @@
 
 #include <CGAL/Geodesic_skeleton/Voxel_frame.h>
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
-#include <CGAL/Geodesic_skeleton/internal/byte_runs.h>
+#include <CGAL/Geodesic_skeleton/internal/voxelize/byte_runs.h>
 
 #include <algorithm>
 #include <cstddef>

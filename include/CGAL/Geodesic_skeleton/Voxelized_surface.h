@@ -10,7 +10,7 @@
 
 #include <CGAL/Geodesic_skeleton/Voxel_frame.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_line_crossings.h>
-#include <CGAL/Geodesic_skeleton/internal/mesh_triangles.h>
+#include <CGAL/Geodesic_skeleton/internal/voxelize/mesh_triangles.h>
 
 #include <cstddef>
 #include <optional>

@@ -11,7 +11,7 @@
 #include <CGAL/Geodesic_skeleton/Control_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
-#include <CGAL/Geodesic_skeleton/internal/skinning_fields.h>
+#include <CGAL/Geodesic_skeleton/internal/skinning/skinning_fields.h>
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 #include <CGAL/Geodesic_skeleton/voxelize.h>

@@ -8,8 +8,8 @@
 /// Geodesic distances on the surface of a mesh, approximated by shortest paths along its
 /// edges (Dijkstra), the baseline distance field of the package.
 
-#include <CGAL/Geodesic_skeleton/internal/edge_length_map.h>
-#include <CGAL/Geodesic_skeleton/internal/indexed_vertices.h>
+#include <CGAL/Geodesic_skeleton/internal/geodesics/edge_length_map.h>
+#include <CGAL/Geodesic_skeleton/internal/geodesics/indexed_vertices.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
 #include <CGAL/boost/graph/helpers.h>

@@ -8,8 +8,8 @@
 /// A mapping function for the Reeb graph: the geodesic distance from one source per
 /// connected component, which does not change when the mesh is rotated or moved.
 
-#include <CGAL/Geodesic_skeleton/internal/distance_fields.h>
-#include <CGAL/Geodesic_skeleton/internal/vertex_components.h>
+#include <CGAL/Geodesic_skeleton/internal/geodesics/distance_fields.h>
+#include <CGAL/Geodesic_skeleton/internal/geodesics/vertex_components.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>

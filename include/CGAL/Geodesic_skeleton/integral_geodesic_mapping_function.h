@@ -9,9 +9,9 @@
 /// integral of the geodesic distance over the surface, normalised to [0, 1].
 
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
-#include <CGAL/Geodesic_skeleton/internal/distance_fields.h>
+#include <CGAL/Geodesic_skeleton/internal/geodesics/distance_fields.h>
 #include <CGAL/Geodesic_skeleton/internal/vec3.h>
-#include <CGAL/Geodesic_skeleton/internal/vertex_components.h>
+#include <CGAL/Geodesic_skeleton/internal/geodesics/vertex_components.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
 #include <CGAL/boost/graph/iterator.h>

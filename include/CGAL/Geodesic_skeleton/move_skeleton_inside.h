@@ -9,7 +9,7 @@
 
 #include <CGAL/Geodesic_skeleton/Voxel_frame.h>
 #include <CGAL/Geodesic_skeleton/Voxelized_surface.h>
-#include <CGAL/Geodesic_skeleton/internal/closed_mesh_interior.h>
+#include <CGAL/Geodesic_skeleton/internal/move_skeleton_inside/closed_mesh_interior.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 
@@ -28,7 +28,7 @@ namespace Geodesic_skeleton {
 namespace internal {
 
 // A frame for move_skeleton_inside() without a voxelized surface: the world axes, from the
-// low corner of the mesh's box, with the default resolution's number of voxels along its longest side.
+// low corner of the mesh's box, with default_voxel_resolution voxels along its longest side.
 template <typename FaceGraph, typename VertexPointMap>
 Voxel_frame world_aligned_frame(const FaceGraph& mesh, VertexPointMap vpm)
 {
@@ -49,7 +49,7 @@ Voxel_frame world_aligned_frame(const FaceGraph& mesh, VertexPointMap vpm)
   if(!(extent > 0) || !std::isfinite(extent))
     throw std::invalid_argument("move_skeleton_inside: the mesh has no extent, or a non-finite coordinate");
   return Voxel_frame(lo, {Voxel_frame::Vector{1., 0., 0.}, Voxel_frame::Vector{0., 1., 0.}, Voxel_frame::Vector{0., 0., 1.}},
-                     extent / parameter_ranges::resolution.default_value);
+                     extent / default_voxel_resolution);
 }
 
 } // namespace internal

@@ -114,6 +114,13 @@ T checked_parameter(const Parameter_range& range, T value, const std::string& ca
 }
 
 } // namespace internal
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// The default of the `resolution` named parameter of `voxelize()`: voxels along the
+/// longest principal axis of the mesh (see benchmark/README.md for the measurement behind
+/// it).
+constexpr int default_voxel_resolution = static_cast<int>(parameter_ranges::resolution.default_value);
+
 } // namespace Geodesic_skeleton
 } // namespace CGAL
 

@@ -11,8 +11,8 @@
 
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
-#include <CGAL/Geodesic_skeleton/internal/branched_regions.h>
-#include <CGAL/Geodesic_skeleton/internal/spurious_branches.h>
+#include <CGAL/Geodesic_skeleton/internal/prune/branched_regions.h>
+#include <CGAL/Geodesic_skeleton/internal/prune/spurious_branches.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
 #include <CGAL/property_map.h>

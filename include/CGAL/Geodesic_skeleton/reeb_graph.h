@@ -9,8 +9,8 @@
 /// the paper compares its pruned skeleton with).
 
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
-#include <CGAL/Geodesic_skeleton/internal/indexed_vertices.h>
-#include <CGAL/Geodesic_skeleton/internal/reeb_pieces.h>
+#include <CGAL/Geodesic_skeleton/internal/geodesics/indexed_vertices.h>
+#include <CGAL/Geodesic_skeleton/internal/reeb_graph/reeb_pieces.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
 #include <CGAL/boost/graph/helpers.h>

@@ -8,7 +8,7 @@
 /// Counts that describe the shape of a skeleton graph.
 
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
-#include <CGAL/Geodesic_skeleton/internal/skeleton_adjacency.h>
+#include <CGAL/Geodesic_skeleton/internal/to_graph/skeleton_adjacency.h>
 
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/connected_components.hpp>

@@ -9,8 +9,8 @@
 /// (paper, section III.B.ii and Algorithm 2).
 
 #include <CGAL/Geodesic_skeleton/Control_skeleton.h>
-#include <CGAL/Geodesic_skeleton/internal/bone_splitting.h>
-#include <CGAL/Geodesic_skeleton/internal/control_tree.h>
+#include <CGAL/Geodesic_skeleton/internal/split_into_bones/bone_splitting.h>
+#include <CGAL/Geodesic_skeleton/internal/split_into_bones/control_tree.h>
 #include <CGAL/Geodesic_skeleton/internal/skeleton_branches.h>
 #include <CGAL/Geodesic_skeleton/internal/skeleton_vertex_maps.h>
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>

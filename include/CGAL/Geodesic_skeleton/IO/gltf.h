@@ -21,7 +21,7 @@
 #include <CGAL/Geodesic_skeleton/Bone_weights.h>
 #include <CGAL/Geodesic_skeleton/Control_skeleton.h>
 #include <CGAL/Geodesic_skeleton/IO/internal/mesh_file_checks.h>
-#include <CGAL/Geodesic_skeleton/internal/joint_tree.h>
+#include <CGAL/Geodesic_skeleton/internal/split_into_bones/joint_tree.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>

@@ -9,7 +9,7 @@
 /// `skeletonize` write, or that a person writes by hand.
 
 #include <CGAL/Geodesic_skeleton/Control_skeleton.h>
-#include <CGAL/Geodesic_skeleton/internal/joint_tree.h>
+#include <CGAL/Geodesic_skeleton/internal/split_into_bones/joint_tree.h>
 
 #include <CGAL/number_utils.h>
 

@@ -8,7 +8,7 @@
 /// A dependency-free SVG picture of a mesh with its control skeleton drawn over it.
 
 #include <CGAL/Geodesic_skeleton/Control_skeleton.h>
-#include <CGAL/Geodesic_skeleton/internal/principal_frame.h>
+#include <CGAL/Geodesic_skeleton/internal/voxelize/principal_frame.h>
 #include <CGAL/Geodesic_skeleton/voxelize.h>
 
 #include <CGAL/boost/graph/iterator.h>

@@ -11,8 +11,8 @@
 // lines are bucketed by grid cell and each triangle visits the cells it covers, so the cost
 // is O(F + L + C) for F triangles, L lines and C crossings (plus the cells covered).
 
-#include <CGAL/Geodesic_skeleton/internal/principal_frame.h>
-#include <CGAL/Geodesic_skeleton/internal/triangle_box_overlap.h>
+#include <CGAL/Geodesic_skeleton/internal/voxelize/principal_frame.h>
+#include <CGAL/Geodesic_skeleton/internal/voxelize/triangle_box_overlap.h>
 
 #include <algorithm>
 #include <array>

@@ -4,7 +4,7 @@
 #ifndef CGAL_GEODESIC_SKELETON_INTERNAL_PRINCIPAL_FRAME_H
 #define CGAL_GEODESIC_SKELETON_INTERNAL_PRINCIPAL_FRAME_H
 
-#include <CGAL/Geodesic_skeleton/internal/triangle_box_overlap.h>
+#include <CGAL/Geodesic_skeleton/internal/voxelize/triangle_box_overlap.h>
 
 #include <Eigen/Dense>
 

@@ -6,7 +6,7 @@
 
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
-#include <CGAL/Geodesic_skeleton/internal/junction_triangles.h>
+#include <CGAL/Geodesic_skeleton/internal/to_graph/junction_triangles.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -20,7 +20,7 @@ namespace internal {
 
 // The graph of a voxel skeleton: its voxels in increasing (z, y, x) order, and the edges
 // between 26-adjacent voxels (node indices, first < second) that make no junction triangle
-// (internal/junction_triangles.h), so that its cycle rank E - V + C is the number of
+// (internal/to_graph/junction_triangles.h), so that its cycle rank E - V + C is the number of
 // tunnels of the skeleton.
 struct Skeleton_adjacency
 {

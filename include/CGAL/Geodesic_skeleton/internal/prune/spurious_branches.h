@@ -8,7 +8,7 @@
 
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
-#include <CGAL/Geodesic_skeleton/internal/branched_regions.h>
+#include <CGAL/Geodesic_skeleton/internal/prune/branched_regions.h>
 
 #include <algorithm>
 #include <cstddef>

@@ -12,8 +12,8 @@
 #include <CGAL/Geodesic_skeleton/internal/disjoint_sets.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_line_crossings.h>
-#include <CGAL/Geodesic_skeleton/internal/principal_frame.h>
-#include <CGAL/Geodesic_skeleton/internal/simple_point.h>
+#include <CGAL/Geodesic_skeleton/internal/voxelize/principal_frame.h>
+#include <CGAL/Geodesic_skeleton/internal/thin/simple_point.h>
 
 #include <algorithm>
 #include <array>
@@ -171,7 +171,7 @@ inline bool thin_closed_surface_encloses_centres(const std::vector<std::array<Ve
 }
 
 // The local tests of the peeling are those of the simple-point test
-// (internal/simple_point.h): Simple_point_test::background_is_one_piece() (T6 = 1: no
+// (internal/thin/simple_point.h): Simple_point_test::background_is_one_piece() (T6 = 1: no
 // cavity or tunnel opened) and Simple_point_test::object_is_split() (T26 >= 2). Removals
 // that pass the first may still disconnect the object or cut a handle: those are the
 // removals peel_surface_voxels wants, and it restores the connections it must keep.

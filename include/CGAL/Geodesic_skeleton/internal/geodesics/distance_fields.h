@@ -5,7 +5,7 @@
 #define CGAL_GEODESIC_SKELETON_INTERNAL_DISTANCE_FIELDS_H
 
 #include <CGAL/Geodesic_skeleton/geodesic_distances.h>
-#include <CGAL/Geodesic_skeleton/internal/vertex_components.h>
+#include <CGAL/Geodesic_skeleton/internal/geodesics/vertex_components.h>
 
 #include <cmath>
 #include <cstddef>

@@ -10,7 +10,7 @@
 
 #include <CGAL/Geodesic_skeleton/Voxel_frame.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_line_crossings.h>
-#include <CGAL/Geodesic_skeleton/internal/principal_frame.h>
+#include <CGAL/Geodesic_skeleton/internal/voxelize/principal_frame.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>

@@ -1,0 +1,351 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_GEODESIC_SKELETON_INTERNAL_CUT_SPURIOUS_CYCLES_SPURIOUS_CYCLES_H
+#define CGAL_GEODESIC_SKELETON_INTERNAL_CUT_SPURIOUS_CYCLES_SPURIOUS_CYCLES_H
+
+// The machinery of cut_spurious_cycles() (include/CGAL/Geodesic_skeleton/cut_spurious_cycles.h): not part of the API.
+
+#include <CGAL/Geodesic_skeleton/Voxelized_surface.h>
+#include <CGAL/Geodesic_skeleton/Voxel_key.h>
+#include <CGAL/Geodesic_skeleton/internal/disjoint_sets.h>
+#include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
+#include <CGAL/Geodesic_skeleton/internal/grid_line_crossings.h>
+#include <CGAL/Geodesic_skeleton/internal/voxelize/mesh_triangles.h>
+#include <CGAL/Geodesic_skeleton/internal/to_graph/skeleton_adjacency.h>
+#include <CGAL/Geodesic_skeleton/parameters.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <algorithm>
+#include <array>
+#include <climits>
+#include <cstddef>
+#include <cstdint>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Geodesic_skeleton {
+namespace internal {
+
+// The number of handles the mesh's surface has: the sum over its connected components of
+// the genus (2 - chi) / 2 of the component with each hole capped by a disc (chi = V - E + F
+// + holes). For a closed, embedded, orientable mesh whose components do not overlap, it is
+// the number of tunnels of the solid it bounds.
+template <typename FaceGraph>
+std::size_t capped_genus_sum(const FaceGraph& mesh)
+{
+  using halfedge_descriptor = typename boost::graph_traits<FaceGraph>::halfedge_descriptor;
+  const auto vim = CGAL::get_initialized_vertex_index_map(mesh);
+  const std::size_t n = static_cast<std::size_t>(num_vertices(mesh));
+  Disjoint_sets components(n);
+  for(auto e : edges(mesh))
+    components.unite(get(vim, source(e, mesh)), get(vim, target(e, mesh)));
+  std::vector<long> chi(n, 0); // indexed by a component's root
+  for(auto v : vertices(mesh))
+    ++chi[components.find(get(vim, v))];
+  for(auto e : edges(mesh))
+    --chi[components.find(get(vim, source(e, mesh)))];
+  for(auto f : faces(mesh))
+    ++chi[components.find(get(vim, target(halfedge(f, mesh), mesh)))];
+  // Holes: cycles of border halfedges.
+  std::vector<halfedge_descriptor> border;
+  for(halfedge_descriptor h : halfedges(mesh))
+    if(is_border(h, mesh))
+      border.push_back(h);
+  std::sort(border.begin(), border.end());
+  std::vector<bool> done(border.size(), false);
+  for(std::size_t start = 0; start < border.size(); ++start)
+  {
+    if(done[start])
+      continue;
+    ++chi[components.find(get(vim, target(border[start], mesh)))];
+    halfedge_descriptor h = border[start];
+    for(std::size_t steps = 0; steps <= border.size(); ++steps)
+    {
+      const auto it = std::lower_bound(border.begin(), border.end(), h);
+      if(it == border.end() || *it != h || done[std::size_t(it - border.begin())])
+        break;
+      done[std::size_t(it - border.begin())] = true;
+      h = next(h, mesh);
+    }
+  }
+  std::size_t genus = 0;
+  for(std::size_t r = 0; r < n; ++r)
+    if(components.find(r) == r && chi[r] < 2)
+      genus += std::size_t((2 - chi[r]) / 2);
+  return genus;
+}
+
+// Components and cycle rank (E - V + C) of the graph restricted to the nodes not removed.
+inline std::pair<std::size_t, std::size_t> components_and_cycles(const Skeleton_adjacency& graph,
+                                                                 const std::vector<bool>& removed)
+{
+  Disjoint_sets sets(graph.nodes.size());
+  std::size_t nodes = 0, edges = 0, merges = 0;
+  for(std::size_t v = 0; v < graph.nodes.size(); ++v)
+    nodes += !removed[v];
+  for(const auto& e : graph.edges)
+    if(!removed[std::size_t(e.first)] && !removed[std::size_t(e.second)])
+    {
+      ++edges;
+      merges += sets.unite(std::size_t(e.first), std::size_t(e.second));
+    }
+  const std::size_t components = nodes - merges;
+  return {components, edges + components - nodes};
+}
+
+// Whether each node lies on a cycle: it has an edge that is no bridge (Tarjan's low links,
+// by an iterative depth-first search).
+inline std::vector<bool> nodes_on_cycles(const Skeleton_adjacency& graph)
+{
+  const std::size_t n = graph.nodes.size();
+  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> incident(n); // (neighbour, edge)
+  for(std::size_t e = 0; e < graph.edges.size(); ++e)
+  {
+    incident[std::size_t(graph.edges[e].first)].emplace_back(std::size_t(graph.edges[e].second), e);
+    incident[std::size_t(graph.edges[e].second)].emplace_back(std::size_t(graph.edges[e].first), e);
+  }
+  const std::size_t unseen = std::size_t(-1);
+  std::vector<std::size_t> order(n, unseen), low(n, 0), parent_edge(n, unseen), cursor(n, 0);
+  std::vector<bool> on_cycle(n, false);
+  std::size_t clock = 0;
+  for(std::size_t root = 0; root < n; ++root)
+  {
+    if(order[root] != unseen)
+      continue;
+    std::vector<std::size_t> stack{root};
+    order[root] = low[root] = clock++;
+    while(!stack.empty())
+    {
+      const std::size_t v = stack.back();
+      if(cursor[v] < incident[v].size())
+      {
+        const auto [w, e] = incident[v][cursor[v]++];
+        if(e == parent_edge[v])
+          continue;
+        if(order[w] == unseen)
+        {
+          order[w] = low[w] = clock++;
+          parent_edge[w] = e;
+          stack.push_back(w);
+        }
+        else
+          low[v] = (std::min)(low[v], order[w]);
+        continue;
+      }
+      stack.pop_back();
+      if(stack.empty())
+        continue;
+      const std::size_t u = stack.back();
+      low[u] = (std::min)(low[u], low[v]);
+      if(low[v] <= order[u]) // the edge u-v is no bridge
+        on_cycle[u] = on_cycle[v] = true;
+    }
+  }
+  // A back edge's ends are on its cycle too (covered above: the tree edges of a cycle are no
+  // bridges, and every node of the cycle has one of them).
+  return on_cycle;
+}
+
+// Whether the straight steps between the centres of 26-adjacent voxels leave the inside of
+// the surface `g` (grid coordinates). A step is walked along the grid axes, through the
+// centres of the voxels between (one, two or three unit moves, in every order); it leaves
+// the inside when every such walk meets a point of winding number zero. A unit move whose
+// line cannot decide (its crossings do not sum to zero) counts as inside.
+class Inside_steps
+{
+public:
+  explicit Inside_steps(const Grid_line_crossings& g) : m_g(g) {}
+
+  // Decides every step of `steps` (pairs of adjacent voxels) at once.
+  std::vector<bool> leave_inside(const std::vector<std::pair<Voxel_key, Voxel_key>>& steps)
+  {
+    // Every walk of every step, as the unit moves it makes: (axis, u, v, start along axis).
+    using Move = std::array<int, 4>;
+    std::vector<std::pair<Move, std::uint32_t>> uses; // (move, walk)
+    std::vector<std::uint32_t> walk_step;             // the step of each walk
+    for(std::size_t s = 0; s < steps.size(); ++s)
+    {
+      const Voxel_key& from = steps[s].first;
+      const int o[3] = {steps[s].second.x - from.x, steps[s].second.y - from.y, steps[s].second.z - from.z};
+      std::array<int, 3> axes{};
+      int count = 0;
+      for(int a = 0; a < 3; ++a)
+        if(o[a] != 0)
+          axes[std::size_t(count++)] = a;
+      do
+      {
+        const std::uint32_t walk = std::uint32_t(walk_step.size());
+        walk_step.push_back(std::uint32_t(s));
+        int at[3] = {from.x, from.y, from.z};
+        for(int k = 0; k < count; ++k)
+        {
+          const int a = axes[std::size_t(k)];
+          uses.emplace_back(Move{a, at[(a + 1) % 3], at[(a + 2) % 3], (std::min)(at[a], at[a] + o[a])}, walk);
+          at[a] += o[a];
+        }
+      } while(std::next_permutation(axes.begin(), axes.begin() + count));
+    }
+    std::vector<Move> moves;
+    moves.reserve(uses.size());
+    for(const auto& use : uses)
+      moves.push_back(use.first);
+    std::sort(moves.begin(), moves.end());
+    moves.erase(std::unique(moves.begin(), moves.end()), moves.end());
+
+    // Decide each unit move on its line (the moves are sorted by axis first).
+    std::vector<bool> move_leaves(moves.size(), false);
+    for(int axis = 0; axis < 3; ++axis)
+    {
+      const auto first = std::lower_bound(moves.begin(), moves.end(), Move{axis, INT_MIN, INT_MIN, INT_MIN});
+      const auto last = std::lower_bound(moves.begin(), moves.end(), Move{axis + 1, INT_MIN, INT_MIN, INT_MIN});
+      std::vector<std::array<double, 2>> lines;
+      for(auto m = first; m != last; ++m)
+        lines.push_back({(*m)[1] + 0.5, (*m)[2] + 0.5});
+      const auto hits = m_g.crossings(axis, lines);
+      for(std::size_t l = 0; l < lines.size(); ++l)
+      {
+        if(!is_balanced(hits[l]))
+          continue;
+        const std::size_t m = std::size_t(first - moves.begin()) + l;
+        const double from = moves[m][3] + 0.5, to = from + 1;
+        int winding = winding_before(hits[l], from);
+        bool leaves = winding == 0;
+        for(const Line_hit& h : hits[l])
+          if(h.at >= from && h.at < to)
+            leaves = leaves || (winding += h.sign) == 0;
+        move_leaves[m] = leaves;
+      }
+    }
+    // A walk leaves when one of its moves does; a step, when all its walks do.
+    std::vector<bool> walk_leaves(walk_step.size(), false);
+    for(const auto& use : uses)
+      if(move_leaves[std::size_t(std::lower_bound(moves.begin(), moves.end(), use.first) - moves.begin())])
+        walk_leaves[use.second] = true;
+    std::vector<bool> leaves(steps.size(), true);
+    for(std::size_t w = 0; w < walk_step.size(); ++w)
+      if(!walk_leaves[w])
+        leaves[walk_step[w]] = false;
+    return leaves;
+  }
+
+private:
+  const Grid_line_crossings& m_g;
+};
+
+// cut_spurious_cycles() with its inside tests against `mesh_lines` (a callable returning
+// the mesh's Grid_line_crossings in the frame of the skeleton, called only when there are
+// more cycles than handles).
+template <typename VoxelSet, typename FaceGraph, typename MeshLines>
+std::size_t cut_spurious_cycles_impl(VoxelSet& skeleton, const FaceGraph& mesh, MeshLines& mesh_lines)
+{
+  if(skeleton.size() == 0 || num_faces(mesh) == 0)
+    return 0;
+  const Grid_layout layout(require_nonempty_box(skeleton, 0, "cut_spurious_cycles"));
+  const Skeleton_adjacency graph = skeleton_adjacency(skeleton, layout);
+  std::vector<bool> removed(graph.nodes.size(), false);
+  const auto [components, initial_cycles] = components_and_cycles(graph, removed);
+  if(initial_cycles == 0)
+    return 0;
+  const std::size_t handles = capped_genus_sum(mesh);
+  if(initial_cycles <= handles)
+    return 0;
+
+  // The voxels on cycles with a step to another one that leaves the mesh's inside.
+  const std::vector<bool> on_cycle = nodes_on_cycles(graph);
+  std::vector<std::pair<Voxel_key, Voxel_key>> steps;
+  std::vector<std::size_t> step_edge;
+  for(std::size_t e = 0; e < graph.edges.size(); ++e)
+  {
+    const auto [a, b] = graph.edges[e];
+    if(on_cycle[std::size_t(a)] && on_cycle[std::size_t(b)])
+    {
+      steps.emplace_back(graph.nodes[std::size_t(a)], graph.nodes[std::size_t(b)]);
+      step_edge.push_back(e);
+    }
+  }
+  const std::vector<bool> leaves = Inside_steps(mesh_lines()).leave_inside(steps);
+  std::vector<int> leaving_steps(graph.nodes.size(), 0), cycle_steps(graph.nodes.size(), 0);
+  for(std::size_t k = 0; k < steps.size(); ++k)
+    for(int end : {graph.edges[step_edge[k]].first, graph.edges[step_edge[k]].second})
+    {
+      ++cycle_steps[std::size_t(end)];
+      leaving_steps[std::size_t(end)] += leaves[k];
+    }
+
+  // What to try removing, in order: single voxels with a step out (those whose every step
+  // leaves, i.e. whose centre is outside, first, then by the number of steps out: a voxel
+  // of the cycle on a side of the gap), then runs of such voxels (connected groups,
+  // shortest first), for where removing one voxel would split the skeleton.
+  std::vector<std::size_t> singles;
+  for(std::size_t v = 0; v < graph.nodes.size(); ++v)
+    if(leaving_steps[v] > 0)
+      singles.push_back(v);
+  std::stable_sort(singles.begin(), singles.end(), [&](std::size_t a, std::size_t b) {
+    const bool a_out = leaving_steps[a] == cycle_steps[a], b_out = leaving_steps[b] == cycle_steps[b];
+    return a_out != b_out ? a_out : leaving_steps[a] > leaving_steps[b];
+  });
+  std::vector<std::vector<std::size_t>> trials;
+  for(std::size_t v : singles)
+    trials.push_back({v});
+  Disjoint_sets runs_of(graph.nodes.size());
+  for(const auto& e : graph.edges)
+    if(leaving_steps[std::size_t(e.first)] > 0 && leaving_steps[std::size_t(e.second)] > 0)
+      runs_of.unite(std::size_t(e.first), std::size_t(e.second));
+  std::vector<std::vector<std::size_t>> runs;
+  {
+    std::vector<std::size_t> run_index(graph.nodes.size(), std::size_t(-1));
+    for(std::size_t v : singles)
+    {
+      std::size_t& r = run_index[runs_of.find(v)];
+      if(r == std::size_t(-1))
+      {
+        r = runs.size();
+        runs.emplace_back();
+      }
+      runs[r].push_back(v);
+    }
+  }
+  std::stable_sort(runs.begin(), runs.end(),
+                   [](const auto& a, const auto& b) { return a.size() < b.size(); });
+  for(auto& run : runs)
+    if(run.size() > 1)
+      trials.push_back(std::move(run));
+
+  std::size_t cycles = initial_cycles;
+  for(const auto& trial : trials)
+  {
+    if(cycles <= handles)
+      break;
+    std::vector<std::size_t> fresh;
+    for(std::size_t v : trial)
+      if(!removed[v])
+      {
+        fresh.push_back(v);
+        removed[v] = true;
+      }
+    if(fresh.empty())
+      continue;
+    const auto [c, b1] = components_and_cycles(graph, removed);
+    if(c == components && b1 < cycles)
+      cycles = b1;
+    else
+      for(std::size_t v : fresh)
+        removed[v] = false;
+  }
+  for(std::size_t v = 0; v < graph.nodes.size(); ++v)
+    if(removed[v])
+      skeleton.erase(graph.nodes[v]);
+  return initial_cycles - cycles;
+}
+
+} // namespace internal
+} // namespace Geodesic_skeleton
+} // namespace CGAL
+
+#endif // CGAL_GEODESIC_SKELETON_INTERNAL_CUT_SPURIOUS_CYCLES_SPURIOUS_CYCLES_H

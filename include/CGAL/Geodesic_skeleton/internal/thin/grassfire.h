@@ -1,0 +1,226 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_GEODESIC_SKELETON_INTERNAL_THIN_GRASSFIRE_H
+#define CGAL_GEODESIC_SKELETON_INTERNAL_THIN_GRASSFIRE_H
+
+// The machinery of thin() (include/CGAL/Geodesic_skeleton/thin.h): not part of the API.
+
+#include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
+#include <CGAL/Geodesic_skeleton/Voxel_key.h>
+#include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
+#include <CGAL/Geodesic_skeleton/internal/thin/simple_point.h>
+#include <CGAL/Geodesic_skeleton/parameters.h>
+
+#include <CGAL/Named_function_parameters.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <sstream>
+#include <vector>
+
+namespace CGAL {
+namespace Geodesic_skeleton {
+namespace internal {
+
+// The ridge thresholds of the thinning's tip protection (Grassfire::on_ridge(): the largest
+// growth of the MAT radius per unit step away from an end point that keeps it a tip). When
+// a round's candidates are chosen, 0.6: a tip tapering at up to 37 degrees keeps its
+// branch, the medial sheets of edges (0.71 per step along a right angle's bisector) burn.
+// When a candidate is deleted, 0.3: only an end point on a plateau of the distance, which
+// the round's own deletions exposed at a corner of the shape, goes.
+constexpr double tip_growth_when_choosing = 0.6;
+constexpr double tip_growth_when_deleting = 0.3;
+
+// The working state of the thinning over a padded box: bit 0 = in the set, bit 1 = queued,
+// bit 2 = deleted by the thinning.
+class Grassfire
+{
+public:
+  static constexpr std::uint8_t IN = 1, QUEUED = 2, DELETED = 4;
+
+  Grassfire(const Grid_layout& layout, std::vector<std::uint8_t> state, const std::uint32_t* d2)
+    : m_layout(layout), m_state(std::move(state)), m_d2(d2),
+      m_offsets(layout.neighbour_offsets()), m_test(Simple_point_test::instance())
+  {
+    for(int row = 0; row < 9; ++row) // from (x - 1, y + dy, z + dz), dy = row % 3 - 1, dz = row / 3 - 1
+      m_row_offsets[row] = (row % 3 - 1) * layout.stride_y + (row / 3 - 1) * layout.stride_z - 1;
+    const auto& n = neighbourhood_26();
+    for(int b = 0; b < 26; ++b)
+      m_offset_length[b] = std::sqrt(double(offset_order(n[b])));
+  }
+
+  // Deletes simple points by increasing distance; returns the number deleted. A level is
+  // burnt in rounds: first the round's candidates are chosen on the configuration at the
+  // start of the round (simple, and not a protected end point), then they are deleted one
+  // by one, each if still simple and not an end point that has become clearly medial
+  // (radius growth below tip_growth_when_deleting per unit step, as on a plateau of the distance): an end point
+  // that the round's own deletions expose at a corner of the shape is no tip, and goes.
+  std::size_t run(const std::vector<std::uint32_t>& order)
+  {
+    for(std::uint32_t i : order)
+      m_state[i] |= QUEUED;
+    std::size_t removed = 0, next = 0;
+    // A voxel is queued at most once at a time (the QUEUED bit): buffers of the set's size
+    // hold any round and its candidates.
+    std::vector<std::uint32_t> round(order.size()), candidates(order.size());
+    std::size_t round_size = 0;
+    while(next < order.size())
+    {
+      const std::uint32_t level = m_d2[order[next]];
+      round_size = 0;
+      while(next < order.size() && m_d2[order[next]] == level)
+        round[round_size++] = order[next++];
+      while(round_size > 0)
+      {
+        std::size_t candidate_count = 0;
+        for(std::size_t k = 0; k < round_size; ++k)
+        {
+          const std::uint32_t i = round[k];
+          m_state[i] &= std::uint8_t(~QUEUED);
+          if(!(m_state[i] & IN))
+            continue;
+          const std::uint32_t config = configuration(i);
+          if(!protected_end(i, config, tip_growth_when_choosing) && m_test.is_simple(config))
+            candidates[candidate_count++] = i;
+        }
+        round_size = 0;
+        for(std::size_t k = 0; k < candidate_count; ++k)
+        {
+          const std::uint32_t i = candidates[k];
+          const std::uint32_t config = configuration(i);
+          if(protected_end(i, config, tip_growth_when_deleting) || !m_test.is_simple(config))
+            continue;
+          m_state[i] = DELETED;
+          ++removed;
+          // Its neighbours in the set (the bits of its configuration) burn again.
+          for(std::uint32_t in = config; in != 0; in &= in - 1)
+          {
+            const std::size_t j = std::size_t(std::ptrdiff_t(i) + m_offsets[std::size_t(lowest_bit(in))]);
+            if(!(m_state[j] & QUEUED))
+            {
+              m_state[j] |= QUEUED;
+              round[round_size++] = std::uint32_t(j);
+            }
+          }
+        }
+      }
+    }
+    return removed;
+  }
+
+  bool deleted(std::size_t i) const { return (m_state[i] & DELETED) != 0; }
+
+  // The 26-neighbourhood of i as a configuration (bit b for neighbourhood_26()[b]): the hot
+  // loop of the thinning. Read as the nine rows of three voxels of the 3 x 3 x 3 cube (in
+  // the (z, y, x) order of neighbourhood_26()), then the centre's bit taken out.
+  std::uint32_t configuration(std::size_t i) const
+  {
+    const std::uint8_t* centre = m_state.data() + i;
+    std::uint32_t cube = 0;
+    for(int row = 0; row < 9; ++row)
+    {
+      const std::uint8_t* r = centre + m_row_offsets[row];
+      cube |= (std::uint32_t(r[0] & IN) | std::uint32_t(r[1] & IN) << 1 | std::uint32_t(r[2] & IN) << 2)
+              << (3 * row);
+    }
+    return (cube & 0x1FFFu) | ((cube >> 14) << 13);
+  }
+
+  // A curve end point on the medial axis (and not half of a 2-voxel piece), for a ridge
+  // threshold `growth` (see on_ridge()).
+  bool protected_end(std::size_t i, std::uint32_t config, double growth) const
+  {
+    return bit_count(config) == 1 && on_ridge(i, growth) &&
+           !is_end_point(sole_neighbour(i, config));
+  }
+
+  std::size_t sole_neighbour(std::size_t i, std::uint32_t config) const
+  {
+    return std::size_t(std::ptrdiff_t(i) + m_offsets[lowest_bit(config)]);
+  }
+  bool is_end_point(std::size_t i) const { return bit_count(configuration(i)) == 1; }
+
+  // Whether the medial ball of i is not swallowed by a neighbour's: no voxel q one or two
+  // steps away along the 26 directions (two steps smooth the discrete radii) has
+  // r(q) >= r(i) + growth |q - i| (a centre of maximal ball, up to the discreteness
+  // of the distance field). Ends of curves are kept only there, so that a branch ends
+  // where the shape's end is rounded (about a radius from the tip) and the erosion does not
+  // leave hairs behind. Along the bisector of a right-angled edge the radius grows by
+  // 0.71 per unit step, so the medial sheets of edges and of blunt ends (wider than
+  // 2 x 37 degrees) burn away; tips tapering at up to 37 degrees keep their branch.
+  bool on_ridge(std::size_t i, double growth) const
+  {
+    const double r = std::sqrt(double(m_d2[i]));
+    for(int b = 0; b < 26; ++b)
+      for(std::ptrdiff_t step = 1; step <= 2; ++step) // one and two voxels away
+      {
+        const std::uint32_t dq = m_d2[std::size_t(std::ptrdiff_t(i) + step * m_offsets[b])];
+        if(dq > m_d2[i] && std::sqrt(double(dq)) - r >= growth * double(step) * m_offset_length[b])
+          return false;
+      }
+    return true;
+  }
+
+private:
+  const Grid_layout& m_layout;
+  std::vector<std::uint8_t> m_state;
+  const std::uint32_t* m_d2;
+  std::array<std::ptrdiff_t, 26> m_offsets;
+  std::array<std::ptrdiff_t, 9> m_row_offsets{};
+  std::array<double, 26> m_offset_length{};
+  const Simple_point_test& m_test;
+};
+
+// The indices of the voxels of `state` (bit 0) sorted by increasing d2, then index:
+// a counting sort when the range of distances is small, else a comparison sort.
+inline std::vector<std::uint32_t> sorted_by_distance(const std::vector<std::uint8_t>& state,
+                                                     const std::uint32_t* d2)
+{
+  std::vector<std::uint32_t> order;
+  std::uint32_t max_d2 = 0;
+  for(std::size_t i = 0; i < state.size(); ++i)
+    if(state[i] & 1)
+    {
+      order.push_back(std::uint32_t(i));
+      max_d2 = (std::max)(max_d2, d2[i]);
+    }
+  if(std::size_t(max_d2) <= 4 * order.size() + 1024)
+  {
+    std::vector<std::uint32_t> start(std::size_t(max_d2) + 2, 0), sorted(order.size());
+    for(std::uint32_t i : order)
+      ++start[d2[i] + 1];
+    for(std::size_t v = 1; v < start.size(); ++v)
+      start[v] += start[v - 1];
+    for(std::uint32_t i : order)
+      sorted[start[d2[i]]++] = i;
+    return sorted;
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [d2](std::uint32_t a, std::uint32_t b) { return d2[a] < d2[b]; });
+  return order;
+}
+
+// The squared distances of `field` over `layout` (0 outside the field's box), row by row.
+inline std::vector<std::uint32_t> distances_over(const Voxel_distance_field& field, const Grid_layout& layout)
+{
+  std::vector<std::uint32_t> out(layout.volume(), 0u);
+  const Voxel_box& from = field.box();
+  const Grid_layout source(from);
+  const int x0 = (std::max)(from.min.x, layout.box.min.x), x1 = (std::min)(from.max.x, layout.box.max.x);
+  if(x0 >= x1)
+    return out;
+  for(int z = (std::max)(from.min.z, layout.box.min.z); z < (std::min)(from.max.z, layout.box.max.z); ++z)
+    for(int y = (std::max)(from.min.y, layout.box.min.y); y < (std::min)(from.max.y, layout.box.max.y); ++y)
+      std::copy_n(field.values().begin() + std::ptrdiff_t(source.index(Voxel_key{x0, y, z})),
+                  x1 - x0, out.begin() + std::ptrdiff_t(layout.index(Voxel_key{x0, y, z})));
+  return out;
+}
+
+} // namespace internal
+} // namespace Geodesic_skeleton
+} // namespace CGAL
+
+#endif // CGAL_GEODESIC_SKELETON_INTERNAL_THIN_GRASSFIRE_H
