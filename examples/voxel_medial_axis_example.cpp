@@ -22,7 +22,6 @@
 #include <CGAL/Geodesic_skeleton/voxelize.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <boost/property_map/function_property_map.hpp>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -74,12 +73,8 @@ int main(int argc, char* argv[])
     const std::size_t cut = GS::cut_spurious_cycles(skeleton, mesh);
 
     // 5. The paper's pruning, with the MAT radius (in voxels) for the snipping of twigs.
-    const auto radius_in_voxels = [&](const GS::Voxel_key& k) {
-      return distances.radius(k) / distances.frame().voxel_size();
-    };
-    const GS::Pruning_report pruning = GS::prune_skeleton(
-        skeleton, GS::parameters::mat_radius_map(
-                      boost::make_function_property_map<GS::Voxel_key, double>(radius_in_voxels)));
+    const GS::Pruning_report pruning =
+        GS::prune_skeleton(skeleton, GS::parameters::mat_radius_map(GS::mat_radius_in_voxels_map(distances)));
 
     // 6. The curve skeleton graph: points in the mesh's coordinates, radii, mesh vertices.
     GS::Curve_skeleton<Point, vertex_descriptor> curve;

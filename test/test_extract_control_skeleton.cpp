@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -384,6 +385,13 @@ BOOST_AUTO_TEST_CASE(move_skeleton_inside_on_its_own)
   gs::voxelize(cow, other, gs::parameters::resolution(32));
   BOOST_CHECK_THROW(gs::cut_spurious_cycles(other, cow, gs::parameters::voxelized_surface(&std::as_const(surface))),
                     std::invalid_argument);
+
+  // A mesh with a non-finite coordinate: a clear error that names the function.
+  Mesh broken = cow;
+  broken.point(*vertices(broken).begin()) = Point(std::nan(""), 0, 0);
+  BOOST_CHECK_EXCEPTION(gs::move_skeleton_inside(broken, curve), std::invalid_argument, [](const std::invalid_argument& e) {
+    return std::string(e.what()).find("move_skeleton_inside: a vertex has a non-finite coordinate") == 0;
+  });
 
   Mesh open_cow = cow;
   CGAL::Euler::remove_face(halfedge(*faces(open_cow).begin(), open_cow), open_cow);

@@ -19,8 +19,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 namespace CGAL {
@@ -39,6 +41,8 @@ Voxel_frame world_aligned_frame(const FaceGraph& mesh, VertexPointMap vpm)
   {
     const auto& p = get(vpm, v);
     const Voxel_frame::Vector q{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+    if(!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
+      throw std::invalid_argument("move_skeleton_inside: a vertex has a non-finite coordinate (NaN or infinite)");
     for(int c = 0; c < 3; ++c)
     {
       lo[c] = (std::min)(lo[c], q[c]);
@@ -47,7 +51,7 @@ Voxel_frame world_aligned_frame(const FaceGraph& mesh, VertexPointMap vpm)
   }
   const double extent = (std::max)({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
   if(!(extent > 0) || !std::isfinite(extent))
-    throw std::invalid_argument("move_skeleton_inside: the mesh has no extent, or a non-finite coordinate");
+    throw std::invalid_argument("move_skeleton_inside: the mesh has no extent");
   return Voxel_frame(lo, {Voxel_frame::Vector{1., 0., 0.}, Voxel_frame::Vector{0., 1., 0.}, Voxel_frame::Vector{0., 0., 1.}},
                      extent / default_voxel_resolution);
 }
@@ -84,7 +88,8 @@ Voxel_frame world_aligned_frame(const FaceGraph& mesh, VertexPointMap vpm)
 ///     `default_voxel_resolution` voxels along the longest side of the mesh's bounding box).
 ///
 /// \returns the skeleton vertices moved, in increasing order.
-/// \throws std::invalid_argument when a mesh vertex has a non-finite coordinate.
+/// \throws std::invalid_argument without `voxelized_surface`, when a mesh vertex has a
+///      non-finite coordinate or the mesh has no extent (all its vertices at one point).
 ///
 /// \b Complexity: O(F + N + C) for F faces, N skeleton points and C pairs of a point and a
 ///    face whose grid cells the point's grid line meets; plus O(F) per point moved (most

@@ -39,7 +39,6 @@ namespace internal {
 template <typename FaceGraph>
 std::size_t capped_genus_sum(const FaceGraph& mesh)
 {
-  using halfedge_descriptor = typename boost::graph_traits<FaceGraph>::halfedge_descriptor;
   const auto vim = CGAL::get_initialized_vertex_index_map(mesh);
   const std::size_t n = static_cast<std::size_t>(num_vertices(mesh));
   Disjoint_sets components(n);
@@ -52,28 +51,10 @@ std::size_t capped_genus_sum(const FaceGraph& mesh)
     --chi[components.find(get(vim, source(e, mesh)))];
   for(auto f : faces(mesh))
     ++chi[components.find(get(vim, target(halfedge(f, mesh), mesh)))];
-  // Holes: cycles of border halfedges.
-  std::vector<halfedge_descriptor> border;
-  for(halfedge_descriptor h : halfedges(mesh))
-    if(is_border(h, mesh))
-      border.push_back(h);
-  std::sort(border.begin(), border.end());
-  std::vector<bool> done(border.size(), false);
-  for(std::size_t start = 0; start < border.size(); ++start)
-  {
-    if(done[start])
-      continue;
-    ++chi[components.find(get(vim, target(border[start], mesh)))];
-    halfedge_descriptor h = border[start];
-    for(std::size_t steps = 0; steps <= border.size(); ++steps)
-    {
-      const auto it = std::lower_bound(border.begin(), border.end(), h);
-      if(it == border.end() || *it != h || done[std::size_t(it - border.begin())])
-        break;
-      done[std::size_t(it - border.begin())] = true;
-      h = next(h, mesh);
-    }
-  }
+  // Holes: cycles of border halfedges, each capped by a disc.
+  for_each_border_cycle(mesh, [&](const auto& cycle) {
+    ++chi[components.find(get(vim, target(cycle.front(), mesh)))];
+  });
   std::size_t genus = 0;
   for(std::size_t r = 0; r < n; ++r)
     if(components.find(r) == r && chi[r] < 2)

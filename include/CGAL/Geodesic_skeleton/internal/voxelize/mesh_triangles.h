@@ -64,11 +64,11 @@ std::vector<Triangle3> mesh_triangles(const FaceGraph& mesh, VertexPointMap vpm,
   return triangles;
 }
 
-// Closes every hole of the mesh (a cycle of border halfedges) by a fan of triangles from
-// the centroid of its vertices, appended to `triangles`; returns the number of holes. The
-// fan may self-intersect or cross the mesh: it is only rasterised, never used as a surface.
-template <typename FaceGraph, typename VertexPointMap>
-std::size_t close_holes(const FaceGraph& mesh, VertexPointMap vpm, std::vector<Triangle3>& triangles)
+// Calls f(cycle) for each cycle of border halfedges of the mesh (a hole), with its
+// halfedges in order along the border; a non-manifold border that comes back to a
+// halfedge already walked ends the cycle there. O(H log H) for H halfedges.
+template <typename FaceGraph, typename Function>
+void for_each_border_cycle(const FaceGraph& mesh, Function f)
 {
   using halfedge_descriptor = typename boost::graph_traits<FaceGraph>::halfedge_descriptor;
   std::vector<halfedge_descriptor> border;
@@ -77,33 +77,42 @@ std::size_t close_holes(const FaceGraph& mesh, VertexPointMap vpm, std::vector<T
       border.push_back(h);
   std::sort(border.begin(), border.end());
   std::vector<bool> done(border.size(), false);
-  auto position = [&](halfedge_descriptor h) {
-    return std::size_t(std::lower_bound(border.begin(), border.end(), h) - border.begin());
-  };
-  auto point = [&](halfedge_descriptor h) {
-    const auto& p = get(vpm, target(h, mesh));
-    return Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-  };
-  std::size_t holes = 0;
-  std::vector<Vec3> loop;
+  std::vector<halfedge_descriptor> cycle;
   for(std::size_t start = 0; start < border.size(); ++start)
   {
     if(done[start])
       continue;
-    loop.clear();
+    cycle.clear();
     halfedge_descriptor h = border[start];
-    // Walk the cycle; a non-manifold border could revisit a halfedge: stop there.
     for(std::size_t steps = 0; steps <= border.size(); ++steps)
     {
-      const std::size_t i = position(h);
+      const std::size_t i = std::size_t(std::lower_bound(border.begin(), border.end(), h) - border.begin());
       if(i >= border.size() || border[i] != h || done[i])
         break;
       done[i] = true;
-      loop.push_back(point(h));
+      cycle.push_back(h);
       h = next(h, mesh);
     }
-    if(loop.size() < 3)
-      continue;
+    f(cycle);
+  }
+}
+
+// Closes every hole of the mesh (a cycle of border halfedges) by a fan of triangles from
+// the centroid of its vertices, appended to `triangles`; returns the number of holes. The
+// fan may self-intersect or cross the mesh: it is only rasterised, never used as a surface.
+template <typename FaceGraph, typename VertexPointMap>
+std::size_t close_holes(const FaceGraph& mesh, VertexPointMap vpm, std::vector<Triangle3>& triangles)
+{
+  std::size_t holes = 0;
+  for_each_border_cycle(mesh, [&](const auto& cycle) {
+    if(cycle.size() < 3)
+      return;
+    std::vector<Vec3> loop;
+    for(auto h : cycle)
+    {
+      const auto& p = get(vpm, target(h, mesh));
+      loop.push_back(Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
+    }
     Vec3 centre{0., 0., 0.};
     for(const Vec3& p : loop)
       for(int c = 0; c < 3; ++c)
@@ -111,7 +120,7 @@ std::size_t close_holes(const FaceGraph& mesh, VertexPointMap vpm, std::vector<T
     for(std::size_t i = 0; i < loop.size(); ++i)
       triangles.push_back(Triangle3{centre, loop[i], loop[(i + 1) % loop.size()]});
     ++holes;
-  }
+  });
   return holes;
 }
 
