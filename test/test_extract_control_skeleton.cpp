@@ -381,6 +381,21 @@ BOOST_AUTO_TEST_CASE(move_skeleton_inside_on_its_own)
   gs::Voxelized_surface surface;
   gs::voxelize(cow, voxels, gs::parameters::voxelized_surface_output(&surface));
   BOOST_TEST(surface.number_of_triangles() == num_faces(cow));
+  // The surface's own inside test agrees with the winding-number oracle on the moved
+  // points (all inside) and on the same points pushed out again.
+  std::vector<gs::Voxel_frame::Vector> moved_points, pushed_out;
+  for(std::size_t v = 0; v < num_vertices(curve); ++v)
+  {
+    const Point& p = curve[v].point;
+    moved_points.push_back({p.x(), p.y(), p.z()});
+    pushed_out.push_back({p.x(), p.y(), p.z() + 10 * (box.zmax() - box.zmin())});
+  }
+  for(gs::Surface_side s : surface.sides(moved_points))
+    BOOST_TEST((s == gs::Surface_side::inside));
+  for(gs::Surface_side s : surface.sides(pushed_out))
+    BOOST_TEST((s == gs::Surface_side::outside));
+  const std::vector<gs::Surface_side> on_empty = gs::Voxelized_surface().sides(moved_points);
+  BOOST_TEST(std::count(on_empty.begin(), on_empty.end(), gs::Surface_side::outside) == long(moved_points.size()));
   gs::Sparse_voxel_set other;
   gs::voxelize(cow, other, gs::parameters::resolution(32));
   BOOST_CHECK_THROW(gs::cut_spurious_cycles(other, cow, gs::parameters::voxelized_surface(&std::as_const(surface))),

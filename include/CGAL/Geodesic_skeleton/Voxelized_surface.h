@@ -56,12 +56,14 @@ public:
   /// \tparam VertexPointMap a readable vertex property map to a CGAL point type.
   /// \throws std::invalid_argument when a vertex has a non-finite coordinate or the mesh
   ///      has no face.
+  /// \b Complexity: O(F + H log H) for F faces and H halfedges (the holes' walk).
   template <typename FaceGraph, typename VertexPointMap>
   Voxelized_surface(const FaceGraph& mesh, VertexPointMap vpm, const Voxel_frame& frame, bool fill_holes = true)
     : m_frame(frame), m_lines(internal::mesh_grid_lines(mesh, vpm, frame, fill_holes, "Voxelized_surface"))
   {}
 
-  /// Takes triangles already in the grid coordinates of `frame`.
+  /// Takes triangles already in the grid coordinates of `frame` (a triangle with a
+  /// non-finite corner meets no grid line: it is never crossed). O(F) for F triangles.
   Voxelized_surface(const Voxel_frame& frame, std::vector<std::array<Voxel_frame::Vector, 3>> grid_triangles)
     : m_frame(frame), m_lines(std::in_place, std::move(grid_triangles))
   {}
