@@ -12,11 +12,13 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Aff_transformation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Mean_curvature_flow_skeletonization.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <boost/mpl/list.hpp>
+#include <boost/property_map/vector_property_map.hpp>
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
@@ -249,6 +251,67 @@ BOOST_AUTO_TEST_CASE(a_polyhedron_gives_the_same_skeleton_as_a_surface_mesh)
   BOOST_TEST(num_vertices(a.graph) == num_vertices(b.graph));
   BOOST_TEST(num_edges(a.graph) == num_edges(b.graph));
   BOOST_TEST(maps_every_vertex_once(a.graph, polyhedron));
+}
+
+BOOST_AUTO_TEST_CASE(an_mcf_skeleton_receives_the_points_and_mesh_vertices_and_a_radius_map_the_radii)
+{
+  // CGAL's MCF skeleton has `point` and `vertices` members, no radius and no voxel: the
+  // first two are written through the bundle, the radius through the map the user gives.
+  const Mesh cow = demo_mesh("cow.off");
+  const test::Voxel_pipeline<Mesh, gs::Sparse_voxel_set> p(cow, 64);
+  CGAL::Mean_curvature_flow_skeletonization<Mesh>::Skeleton mcf;
+  std::vector<double> radii;
+  gs::to_graph(p.voxels, p.distances, cow, mcf,
+               gs::parameters::mat_radius_map(boost::make_function_property_map<std::size_t, double&>(
+                   [&radii](std::size_t v) -> double& {
+                     if(v >= radii.size())
+                       radii.resize(v + 1, -1.);
+                     return radii[v];
+                   })));
+  BOOST_TEST(num_vertices(mcf) == num_vertices(p.graph));
+  BOOST_TEST(num_edges(mcf) == num_edges(p.graph));
+  BOOST_TEST(radii.size() == num_vertices(p.graph));
+  for(std::size_t v = 0; v < num_vertices(mcf); ++v)
+  {
+    BOOST_TEST(mcf[v].point == p.graph[v].point);
+    BOOST_TEST((mcf[v].vertices == p.graph[v].vertices));
+    BOOST_TEST(radii[std::min(v, radii.size() - 1)] == p.graph[v].radius);
+  }
+  BOOST_TEST(maps_every_vertex_once(mcf, cow));
+}
+
+BOOST_AUTO_TEST_CASE(every_quantity_goes_through_the_maps_the_user_gives)
+{
+  // A graph whose bundle has none of the default member names: every quantity through a
+  // map the user owns, equal to what Curve_skeleton's members receive.
+  struct Node
+  {
+    int tag = 7;
+  };
+  using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, Node>;
+  const Mesh dino = demo_mesh("dino.off");
+  const test::Voxel_pipeline<Mesh, gs::Dense_voxel_grid> p(dino, 48);
+  Graph g;
+  boost::vector_property_map<Point> points;
+  boost::vector_property_map<double> radii;
+  boost::vector_property_map<std::vector<Mesh::Vertex_index>> mapped;
+  boost::vector_property_map<gs::Voxel_key> voxels;
+  gs::to_graph(p.voxels, p.distances, dino, g,
+               gs::parameters::combine(gs::parameters::skeleton_point_map(points), gs::parameters::mat_radius_map(radii),
+                                       gs::parameters::mesh_vertices_map(mapped), gs::parameters::voxel_map(voxels)));
+  BOOST_TEST(num_vertices(g) == num_vertices(p.graph));
+  BOOST_TEST(num_edges(g) == num_edges(p.graph));
+  std::size_t mesh_vertices = 0;
+  for(std::size_t v = 0; v < num_vertices(g); ++v)
+  {
+    BOOST_TEST(g[v].tag == 7);
+    BOOST_TEST(points[v] == p.graph[v].point);
+    BOOST_TEST(radii[v] == p.graph[v].radius);
+    BOOST_TEST((mapped[v] == p.graph[v].vertices));
+    BOOST_TEST((voxels[v] == p.graph[v].voxel));
+    mesh_vertices += mapped[v].size();
+  }
+  BOOST_TEST(mesh_vertices == std::size_t(num_vertices(dino)));
 }
 
 BOOST_AUTO_TEST_CASE(an_empty_skeleton_is_an_error)

@@ -85,7 +85,7 @@ void smooth_skeleton(CurveSkeleton& skeleton,
   auto point_map = internal::skeleton_point_map(skeleton, np);
   using Point = typename boost::property_traits<decltype(point_map)>::value_type;
   auto radius_map = internal::skeleton_radius_map(skeleton, np);
-  constexpr bool with_radius = !std::is_same_v<decltype(radius_map), internal::No_radius_map>;
+  constexpr bool with_radius = !std::is_same_v<decltype(radius_map), internal::No_map>;
 
   // Positions before smoothing: x, y, z, radius (0 without radius map).
   const std::size_t n = num_vertices(skeleton);

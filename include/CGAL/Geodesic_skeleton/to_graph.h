@@ -14,6 +14,7 @@
 #include <CGAL/Geodesic_skeleton/Voxelized_surface.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_line_crossings.h>
+#include <CGAL/Geodesic_skeleton/internal/skeleton_vertex_maps.h>
 #include <CGAL/Geodesic_skeleton/internal/to_graph/curve_skeleton_graph.h>
 #include <CGAL/Geodesic_skeleton/internal/to_graph/skeleton_adjacency.h>
 #include <CGAL/Geodesic_skeleton/internal/voxelize/mesh_triangles.h>
@@ -75,9 +76,12 @@ namespace Geodesic_skeleton {
 /// \tparam FaceGraph a model of `FaceListGraph`: its vertices are mapped, its faces decide
 ///         which voxel centres are inside.
 /// \tparam Graph a `boost::adjacency_list` with `vecS` vertices, such as
-///         `Curve_skeleton<Point, vertex_descriptor>`, whose vertex bundle has members
-///         `point` (constructible from three `double`s), `radius` (`double`), `vertices`
-///         (a container of `FaceGraph` vertex descriptors with `push_back`) and `voxel`.
+///         `Curve_skeleton<Point, vertex_descriptor>` or
+///         `CGAL::Mean_curvature_flow_skeletonization<FaceGraph>::Skeleton`. Each vertex's
+///         point, radius, mesh vertices and voxel are written through the maps below; by
+///         default through the vertex bundle's members `point`, `radius`, `vertices` and
+///         `voxel`, and a bundle without `radius`, `vertices` or `voxel` member (and no map
+///         given for it) simply does not receive that quantity.
 /// \param skeleton the voxel skeleton (its frame maps voxels to the mesh's coordinates).
 /// \param distances the distance field of the solid the skeleton was thinned from
 ///        (`distance_transform()`); it gives the radii and the solid for the mapping.
@@ -93,6 +97,19 @@ namespace Geodesic_skeleton {
 ///     `voxelize()` rasterised it (its `voxelized_surface_output`), for the inside test
 ///     (default: built from `mesh`, `vertex_point_map` and `fill_holes` when a centre is
 ///     in doubt). It must be in the skeleton's frame.
+///   - `skeleton_point_map` (package parameter): a writable vertex property map of `graph`
+///     whose value type is a point constructible from three `double`s: receives each
+///     vertex's point (default: the bundle's `point` member; required when there is none).
+///   - `mat_radius_map` (package parameter): a writable vertex property map of `graph` with
+///     `double` values: receives the medial radius (world units) (default: the bundle's
+///     `radius` member, else not written).
+///   - `mesh_vertices_map` (package parameter): a writable vertex property map of `graph`
+///     whose value type is a container of `FaceGraph` vertex descriptors constructible from
+///     an iterator range: receives the mesh vertices mapped to each vertex (default: the
+///     bundle's `vertices` member, else not written).
+///   - `voxel_map` (package parameter): a writable vertex property map of `graph` with
+///     `Voxel_key` values: receives each vertex's voxel (default: the bundle's `voxel`
+///     member, else not written).
 ///   - `memory_limit` (package parameter, `double`, bytes): the most memory the function
 ///     may allocate (default: `default_voxel_memory_limit`, 2 GiB); the need, 4 bytes per
 ///     voxel of the field's box and of the skeleton's box, is checked before allocating.
@@ -118,7 +135,8 @@ void to_graph(const VoxelSet& skeleton, const Voxel_distance_field& distances,
   internal::Stage_surface<FaceGraph, decltype(vpm)> mesh_lines(
       choose_parameter(get_parameter(np, internal_np::voxelized_surface_tag), static_cast<const Voxelized_surface*>(nullptr)),
       mesh, vpm, skeleton.frame(), choose_parameter(get_parameter(np, internal_np::fill_holes_tag), true), "to_graph");
-  internal::to_graph_impl(skeleton, distances, mesh, graph, vpm, internal::memory_limit(np), mesh_lines);
+  internal::to_graph_impl(skeleton, distances, mesh, graph, vpm, internal::curve_skeleton_output_maps(graph, np),
+                          internal::memory_limit(np), mesh_lines);
 }
 
 } // namespace Geodesic_skeleton

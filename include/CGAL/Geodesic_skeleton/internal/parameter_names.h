@@ -23,7 +23,7 @@ CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(fill_holes)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(voxelized_surface_output)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(voxelized_surface)
 
-// prune_skeleton
+// prune_skeleton; smooth_skeleton, split_into_bones, to_graph (the skeleton's radii)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(mat_radius_map)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(spur_length_factor)
 
@@ -45,6 +45,11 @@ CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(curve_skeleton_output)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(thinned_skeleton_output)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(reeb_graph_output)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(number_of_reeb_intervals)
+
+// to_graph (the maps of the curve skeleton it writes)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(skeleton_point_map)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(mesh_vertices_map)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(voxel_map)
 
 // voxelize (appended)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(keep_surface_voxels)

@@ -13,6 +13,7 @@
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
 #include <boost/graph/properties.hpp>
+#include <boost/property_map/property_map.hpp>
 
 #include <type_traits>
 #include <utility>
@@ -35,6 +36,22 @@ struct has_radius_member : std::false_type
 {};
 template <typename Bundle>
 struct has_radius_member<Bundle, std::void_t<decltype(std::declval<Bundle&>().radius)>> : std::true_type
+{};
+
+// Whether a vertex bundle has a data member `vertices` (the mesh vertices mapped to it).
+template <typename Bundle, typename = void>
+struct has_vertices_member : std::false_type
+{};
+template <typename Bundle>
+struct has_vertices_member<Bundle, std::void_t<decltype(std::declval<Bundle&>().vertices)>> : std::true_type
+{};
+
+// Whether a vertex bundle has a data member `voxel`.
+template <typename Bundle, typename = void>
+struct has_voxel_member : std::false_type
+{};
+template <typename Bundle>
+struct has_voxel_member<Bundle, std::void_t<decltype(std::declval<Bundle&>().voxel)>> : std::true_type
 {};
 
 // The vertex bundle of a graph (const or not).
@@ -66,22 +83,109 @@ auto skeleton_point_map(Graph& skeleton, const NamedParameters& np)
   }
 }
 
-// What skeleton_radius_map() gives for a skeleton without radius: nothing to read.
-struct No_radius_map
+// What skeleton_radius_map() gives for a skeleton without radius: nothing to read (and
+// what the output_*_map() functions give for a map to leave unwritten).
+struct No_map
 {};
 
-// The `mat_radius_map` of `np`, else get(&Bundle::radius, skeleton), else No_radius_map
+// The named parameter `tag` of `np` when given, else `member_map()`.
+template <typename Tag, typename NamedParameters, typename MemberMap>
+auto parameter_or_member(const NamedParameters& np, Tag tag, MemberMap member_map)
+{
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, Tag>::value)
+    return CGAL::parameters::get_parameter(np, tag);
+  else
+    return member_map();
+}
+
+// The `mat_radius_map` of `np`, else get(&Bundle::radius, skeleton), else No_map
 // (exactly when has_radius_map<Graph, NamedParameters>() is false).
 template <typename Graph, typename NamedParameters>
 auto skeleton_radius_map(Graph& skeleton, const NamedParameters& np)
 {
   using Bundle = vertex_bundle_t<Graph>;
-  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::mat_radius_map_t>::value)
-    return CGAL::parameters::get_parameter(np, internal_np::mat_radius_map_tag);
-  else if constexpr(has_radius_member<Bundle>::value)
-    return get(&Bundle::radius, skeleton);
+  return parameter_or_member(np, internal_np::mat_radius_map_tag, [&] {
+    if constexpr(has_radius_member<Bundle>::value)
+      return get(&Bundle::radius, skeleton);
+    else
+      return No_map{};
+  });
+}
+
+// The maps that to_graph() writes: its `skeleton_point_map`, `mat_radius_map`,
+// `mesh_vertices_map` and `voxel_map` named parameters when given, else the vertex
+// bundle's `point`, `radius`, `vertices` and `voxel` members; a map that is neither given
+// nor a member is No_map (nothing written). The point map is required.
+//
+// Mapping into a graph whose bundle has none of these members (an MCF skeleton has `point`
+// and `vertices`, no `radius` nor `voxel`) is so possible without a wrapper type.
+template <typename Graph, typename NamedParameters>
+auto output_point_map(Graph& skeleton, const NamedParameters& np)
+{
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::skeleton_point_map_t>::value)
+    return CGAL::parameters::get_parameter(np, internal_np::skeleton_point_map_tag);
   else
-    return No_radius_map{};
+  {
+    using Bundle = vertex_bundle_t<Graph>;
+    static_assert(has_point_member<Bundle>::value,
+                  "the skeleton's vertex bundle has no `point` member: give a skeleton_point_map");
+    return get(&Bundle::point, skeleton);
+  }
+}
+
+template <typename Graph, typename NamedParameters>
+auto output_mesh_vertices_map(Graph& skeleton, const NamedParameters& np)
+{
+  using Bundle = vertex_bundle_t<Graph>;
+  return parameter_or_member(np, internal_np::mesh_vertices_map_tag, [&] {
+    if constexpr(has_vertices_member<Bundle>::value)
+      return get(&Bundle::vertices, skeleton);
+    else
+      return No_map{};
+  });
+}
+
+template <typename Graph, typename NamedParameters>
+auto output_voxel_map(Graph& skeleton, const NamedParameters& np)
+{
+  using Bundle = vertex_bundle_t<Graph>;
+  return parameter_or_member(np, internal_np::voxel_map_tag, [&] {
+    if constexpr(has_voxel_member<Bundle>::value)
+      return get(&Bundle::voxel, skeleton);
+    else
+      return No_map{};
+  });
+}
+
+// The four maps to_graph() writes a curve skeleton's vertices through.
+template <typename PointMap, typename RadiusMap, typename MeshVerticesMap, typename VoxelMap>
+struct Curve_skeleton_output_maps
+{
+  using Point_map = PointMap;
+  using Mesh_vertices_map = MeshVerticesMap;
+  PointMap points;
+  RadiusMap radii;
+  MeshVerticesMap mesh_vertices;
+  VoxelMap voxels;
+};
+
+template <typename Graph, typename NamedParameters>
+auto curve_skeleton_output_maps(Graph& skeleton, const NamedParameters& np)
+{
+  auto points = output_point_map(skeleton, np);
+  auto radii = skeleton_radius_map(skeleton, np);
+  auto mesh_vertices = output_mesh_vertices_map(skeleton, np);
+  auto voxels = output_voxel_map(skeleton, np);
+  return Curve_skeleton_output_maps<decltype(points), decltype(radii), decltype(mesh_vertices), decltype(voxels)>{
+      points, radii, mesh_vertices, voxels};
+}
+
+// put(map, key, value), or nothing for a map that is not there.
+template <typename Map, typename Key, typename Value>
+void put_if_mapped(const Map& map, const Key& key, Value&& value)
+{
+  if constexpr(!std::is_same_v<Map, No_map>)
+    put(map, key, std::forward<Value>(value));
 }
 
 } // namespace internal

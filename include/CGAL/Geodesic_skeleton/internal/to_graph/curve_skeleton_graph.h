@@ -13,6 +13,7 @@
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_line_crossings.h>
 #include <CGAL/Geodesic_skeleton/internal/voxelize/mesh_triangles.h>
+#include <CGAL/Geodesic_skeleton/internal/skeleton_vertex_maps.h>
 #include <CGAL/Geodesic_skeleton/internal/to_graph/skeleton_adjacency.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
@@ -26,6 +27,7 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -155,12 +157,14 @@ std::vector<Voxel_frame::Vector> skeleton_points_inside(const std::vector<Voxel_
 
 // to_graph() with its inside tests against `mesh_lines` (a callable returning the mesh's
 // Grid_line_crossings in the frame of the skeleton).
-template <typename VoxelSet, typename FaceGraph, typename Graph, typename VertexPointMap, typename MeshLines>
+// The graph's vertices are written through `maps` (Curve_skeleton_output_maps).
+template <typename VoxelSet, typename FaceGraph, typename Graph, typename VertexPointMap, typename OutputMaps,
+          typename MeshLines>
 void to_graph_impl(const VoxelSet& skeleton, const Voxel_distance_field& distances, const FaceGraph& mesh,
-                   Graph& graph, VertexPointMap vpm, double memory_limit, MeshLines& mesh_lines)
+                   Graph& graph, VertexPointMap vpm, const OutputMaps& maps, double memory_limit,
+                   MeshLines& mesh_lines)
 {
-  using Vertex_bundle = typename boost::vertex_bundle_type<Graph>::type;
-  using Point = decltype(Vertex_bundle::point);
+  using Point = typename boost::property_traits<typename OutputMaps::Point_map>::value_type;
   const char* caller = "to_graph";
 
   const Voxel_box skeleton_box = require_nonempty_box(skeleton, 1, caller);
@@ -179,14 +183,16 @@ void to_graph_impl(const VoxelSet& skeleton, const Voxel_distance_field& distanc
   for(std::size_t v = 0; v < nodes.size(); ++v)
   {
     const auto gv = add_vertex(graph);
-    graph[gv].point = Point(points[v][0], points[v][1], points[v][2]);
-    graph[gv].radius = distances.radius(nodes[v]);
-    graph[gv].voxel = nodes[v];
+    put(maps.points, gv, Point(points[v][0], points[v][1], points[v][2]));
+    put_if_mapped(maps.radii, gv, distances.radius(nodes[v]));
+    put_if_mapped(maps.voxels, gv, nodes[v]);
   }
   for(const auto& e : adjacency.edges)
     add_edge(e.first, e.second, graph);
 
-  // Mesh vertices.
+  // Mesh vertices, gathered per node, then written once per node.
+  using Mesh_vertex = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
+  std::vector<std::vector<Mesh_vertex>> mapped(nodes.size());
   const Nearest_node_inside nearest_node(distances, nodes);
   for(auto mv : vertices(mesh))
   {
@@ -233,7 +239,13 @@ void to_graph_impl(const VoxelSet& skeleton, const Voxel_distance_field& distanc
         }
       }
     }
-    graph[std::size_t(best)].vertices.push_back(mv);
+    mapped[std::size_t(best)].push_back(mv);
+  }
+  if constexpr(!std::is_same_v<typename OutputMaps::Mesh_vertices_map, No_map>)
+  {
+    using Mesh_vertex_list = typename boost::property_traits<typename OutputMaps::Mesh_vertices_map>::value_type;
+    for(std::size_t v = 0; v < nodes.size(); ++v)
+      put(maps.mesh_vertices, vertex(v, graph), Mesh_vertex_list(mapped[v].begin(), mapped[v].end()));
   }
 }
 
