@@ -124,11 +124,23 @@ private:
 /// \param points the polyline, in order (for a closed one, without repeating the first point).
 /// \param chord_length L, in the polyline's units; finite and positive.
 /// \param out receives one value per point, in order.
-/// \param np optional named parameters among:
-///   - `closed_polyline` (package parameter): whether the last point links back to the
-///     first (default: `false`).
-///   - `number_of_chords` (package parameter): c + 1 chords are sampled per point, c in
-///     [1, 1000] (default: 16).
+/// \param np an optional sequence of \ref manual_named_parameters "named parameters"
+///        among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{closed_polyline}
+///     \cgalParamDescription{whether the last point links back to the first (package
+///                           parameter)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_chords}
+///     \cgalParamDescription{c + 1 chords are sampled per point, c in [1, 1000] (package
+///                           parameter)}
+///     \cgalParamType{`int`}
+///     \cgalParamDefault{16}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
 /// \returns the output iterator after the last value.
 /// \throws std::invalid_argument when L is not finite and positive, c is out of range, or
 ///         a coordinate is not finite.
