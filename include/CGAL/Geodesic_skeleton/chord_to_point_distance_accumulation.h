@@ -114,10 +114,13 @@ private:
 ///     h(k) = (1 / (L * c)) * sum of D over the c chords that lie on the polyline,
 ///
 /// the mean distance in units of the chord length: 0 where the polyline is straight over
-/// a length L around p_k; at a corner whose arms are longer than L, the mean over x in
-/// [0, 1] of x (1 - x) sin(t) / |chord| for a turn by the angle t: 0.058 for 20 degrees,
-/// 0.08 for 28, 0.126 for 45, 0.217 for a right angle; and 0 when no chord fits (an open polyline shorter than L). On an open polyline
-/// chords that would run past an end are left out; a closed polyline wraps around.
+/// a length L around p_k; at a corner whose arms are longer than L, the mean of
+/// x (1 - x) sin(t) / |chord| over the c + 1 values x = 0, 1/c, ..., 1 for a turn by the
+/// angle t: with the default 16 + 1 chords, 0.054 for 20 degrees, 0.080 for 30, 0.118 for
+/// 45, 0.204 for a right angle (about 16/17 of the mean over all x in [0, 1], 0.058,
+/// 0.080 at 28 degrees, 0.126 and 0.217, which it tends to as c grows); and 0 when no
+/// chord fits (an open polyline shorter than L). On an open polyline chords that would run
+/// past an end are left out; a closed polyline wraps around.
 ///
 /// \tparam PointRange a range of CGAL 3D points (with `x()`, `y()`, `z()`).
 /// \tparam OutputIterator an output iterator accepting `double`.

@@ -197,8 +197,9 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 ///     \cgalParamDescription{the accumulation, in chord lengths, that makes a bend a joint,
 ///                           in [0, 1] (package parameter)}
 ///     \cgalParamType{`double`}
-///     \cgalParamDefault{0.08: a corner turning by 28 degrees reaches it; 20 degrees give
-///                       0.058, a right angle 0.217}
+///     \cgalParamDefault{0.08: a corner turning by 30 degrees reaches it (with the
+///                       accumulation's default `number_of_chords`); 20 degrees give
+///                       0.054, a right angle 0.204}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{straightness_tolerance}
 ///     \cgalParamDescription{how far a bone may stray from its chord, in MAT radii, in
