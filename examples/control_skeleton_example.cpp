@@ -72,8 +72,8 @@ int main(int argc, char* argv[])
 
     //! [split_into_bones]
     // The later stages alone, on the curve skeleton the chain hands back: a coarser rig
-    // (joints at bends of 45 degrees or more only, bones allowed to stray by 1.5 radii from
-    // straight) from the same smoothed skeleton...
+    // (joints at bends of about 48 degrees or more only, bones allowed to stray by 1.5
+    // radii from straight) from the same smoothed skeleton...
     GS::Curve_skeleton<Point, boost::graph_traits<Mesh>::vertex_descriptor> curve;
     GS::extract_control_skeleton(mesh, control, GS::parameters::curve_skeleton_output(&curve));
     GS::Control_skeleton<Point> coarse;

@@ -50,6 +50,9 @@
 
 // The whole chain.
 #include <CGAL/Geodesic_skeleton/extract_control_skeleton.h>
+// Skinning weights.
+#include <CGAL/Geodesic_skeleton/Bone_weights.h>
+#include <CGAL/Geodesic_skeleton/compute_skinning_weights.h>
 
 // Writers.
 #include <CGAL/Geodesic_skeleton/IO/bvh.h>

@@ -128,39 +128,16 @@ inline void normalise(Bone_weights& weights)
 /// `max_bones_per_vertex` bones of `skeleton`: non-negative, summing to 1, for linear
 /// blend skinning (as glTF 2.0 and every animation tool use them).
 ///
-/// <b>Method: geodesic voxel binding</b> (after Dionne and de Lasa, <i>Geodesic Voxel
-/// Binding for Production Character Meshes</i>, SCA 2013). The solid of the mesh is
-/// voxelized with `voxelize()` (so open meshes, several components and self-intersections
-/// are handled as there). Each bone (its `points`, or the segment from its parent joint to
-/// its child joint when it has fewer than two points) is rasterised into the solid: the
-/// voxels it runs through, or the solid voxel nearest to it when it runs outside the mesh.
-/// A multi-source Dijkstra search from all the bones' voxels at once, through the solid's
-/// voxels with 26-neighbour steps of 1, sqrt 2 and sqrt 3 voxels (in hundredths of a voxel,
-/// 100, 141 and 173, so that a bucket queue replaces the heap), gives the distance `d1`
-/// to the nearest bone; then one search per bone gives its distance `d_b`. The distance
-/// through the solid (not through the air) is what keeps an arm's weights off the
-/// torso it nearly touches. A field is read at a vertex as the least, over the eight voxel
-/// centres around it that the field reached, of the field there plus the straight distance
-/// from the vertex to that centre (all in voxels). The weight of bone `b` at a vertex is
-///
-/// `w_b = max(0, (d_b + 1/2)^(-p) - (s (d1 + 1/2))^(-p))`,
-///
-/// with `p` = `falloff` and `s` = `influence_ratio`; the half voxel keeps a vertex on a bone
-/// finite. So a bone has no weight where its distance is `s` times the nearest bone's or
-/// more (the weights are local: the far end of a limb follows its own bone only), and the
-/// weight goes to zero continuously there (no jump between neighbouring vertices). The
-/// `max_bones_per_vertex` largest weights are kept and scaled to sum 1.
-///
-/// <b>Cost.</b> A bone's search stops expanding at a voxel where
-/// `d_b + 1/2 >= s (d1 + 1/2) + 1` (where its weight is zero, with a margin of a voxel for
-/// the reading at the vertices), so each voxel is visited by the few bones near it, not by every bone: the
-/// whole costs a few times one search through the solid. A voxel that the bone could only
-/// reach through such voxels (around a bend of the solid) gets no weight from it.
-///
-/// A vertex none of whose eight voxel centres is reached by any bone (a detached piece of
-/// the mesh without a bone, such as a loose eye; or a vertex outside the solid with
-/// `keep_surface_voxels(false)`) is bound with weight 1 to the bone nearest to it in
-/// straight line (`Skinning_report::vertices_bound_in_straight_line` counts them).
+/// The method is geodesic voxel binding (after Dionne and de Lasa, <i>Geodesic Voxel
+/// Binding for Production Character Meshes</i>, SCA 2013): distances from the bones run
+/// through the voxels of the mesh's solid (`voxelize()`), and the weight of bone `b` at a
+/// vertex is `w_b = max(0, (d_b + 1/2)^(-p) - (s (d1 + 1/2))^(-p))`, with `d_b` its
+/// distance to bone `b`, `d1` to the nearest bone (in voxels), `p` = `falloff` and `s` =
+/// `influence_ratio`; the `max_bones_per_vertex` largest are kept and scaled to sum 1. A
+/// vertex that no bone's search reaches (a detached piece without a bone) is bound with
+/// weight 1 to the bone nearest in straight line. The searches, the reading of a field at
+/// a vertex and what bounds the cost are described in the manual, section
+/// \ref manual_skinning_method.
 ///
 /// The skeleton may be any: from `extract_control_skeleton()` or `split_into_bones()`, or
 /// filled by hand (joints with their points and parents, bones with `parent` and `child`;
@@ -176,24 +153,52 @@ inline void normalise(Bone_weights& weights)
 /// \param mesh the mesh.
 /// \param skeleton the control skeleton, in the mesh's coordinates.
 /// \param weight_output receives the weights of every vertex, by decreasing weight.
-/// \param np optional named parameters among:
-///   - `max_bones_per_vertex` (package parameter, `int`): the most bones that influence one
-///     vertex, in [1, 8] (default 4, what glTF's `JOINTS_0`/`WEIGHTS_0` hold).
-///   - `falloff` (package parameter, `double`): the exponent `p` above, in [0.5, 16]
-///     (default 2: inverse square distance; larger gives sharper transitions at the joints).
-///   - `influence_ratio` (package parameter, `double`): `s` above, in [1.05, 100] (default
-///     2: a bone influences vertices up to twice as far from it as from the nearest bone, so
-///     the blend around a joint of a limb of radius r spans about 1.7 r on each side; a
-///     larger ratio blends more widely and costs more: `Skinning_report::voxel_visits`).
-///   - `bone_segmentation_map` (package parameter): a writable vertex property map of an
-///     integer type; receives the bone of largest weight of each vertex (the hard
-///     segmentation of the mesh by bone).
-///   - `resolution`, `fill_holes`, `keep_surface_voxels`, `memory_limit`, `vertex_point_map`:
-///     as for `voxelize()` (the voxel grid of the distances; default resolution
-///     `default_voxel_resolution`, 64). The memory need is checked first: about 13 bytes
-///     per voxel of the solid's box, 16 per solid voxel and 112 per vertex, besides
-///     `voxelize()`'s.
-///   - `vertex_index_map`: a vertex index map (default: the mesh's, initialised if needed).
+/// \param np an optional sequence of \ref manual_named_parameters "named parameters"
+///        among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{max_bones_per_vertex}
+///     \cgalParamDescription{the most bones that influence one vertex, in [1, 8] (package
+///                           parameter)}
+///     \cgalParamType{`int`}
+///     \cgalParamDefault{4, what glTF's `JOINTS_0`/`WEIGHTS_0` hold}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{falloff}
+///     \cgalParamDescription{the exponent `p` above, in [0.5, 16] (package parameter)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{2: inverse square distance; larger gives sharper transitions at
+///                       the joints}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{influence_ratio}
+///     \cgalParamDescription{`s` above, in [1.05, 100] (package parameter)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{2: a bone influences vertices up to twice as far from it as from
+///                       the nearest bone, so the blend around a joint of a limb of radius
+///                       r spans about 1.7 r on each side}
+///     \cgalParamExtra{A larger ratio blends more widely and costs more:
+///                     `Skinning_report::voxel_visits`.}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{bone_segmentation_map}
+///     \cgalParamDescription{receives the bone of largest weight of each vertex (the hard
+///                           segmentation of the mesh by bone) (package parameter)}
+///     \cgalParamType{a model of `WritablePropertyMap` with the mesh's vertex descriptor as
+///                    key type and an integer type as value type}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{resolution, fill_holes, keep_surface_voxels, memory_limit, vertex_point_map}
+///     \cgalParamDescription{as for `voxelize()`: the voxel grid of the distances}
+///     \cgalParamType{as for `voxelize()`}
+///     \cgalParamDefault{as for `voxelize()` (resolution `default_voxel_resolution`, 64)}
+///     \cgalParamExtra{The memory need is checked first: about 13 bytes per voxel of the
+///                     solid's box, 16 per solid voxel and 112 per vertex, besides
+///                     `voxelize()`'s.}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a vertex index map}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the mesh's vertex descriptor as
+///                    key type and an integer type as value type}
+///     \cgalParamDefault{the mesh's, initialised if needed}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \returns what was done: the voxels, the work of the searches, the vertices bound in
 ///          straight line, the time.

@@ -40,44 +40,41 @@ namespace Geodesic_skeleton {
 /// each other (a hand resting on a thigh, legs that nearly touch), and `thin()`, which keeps
 /// the solid's topology, turns each such bridge into a cycle of the skeleton. Such a cycle
 /// crosses the gap between the parts, outside the mesh: removing the skeleton voxels on
-/// either side of the gap opens it.
-///
-/// <b>Method.</b> The skeleton's cycles are counted on its 26-adjacency graph without
-/// junction triangles (as in `to_graph()`), and compared with the number of handles of the
-/// mesh: the sum over its connected components of their genus, holes capped by discs. When
-/// there are more cycles than handles, each step between two adjacent voxels on cycles is
-/// tested: it leaves the mesh when every walk along the grid axes between the two centres
-/// (through the voxel centres between them, in each order of the axes) meets a point of
-/// winding number zero, counted along grid lines (hole-filling fans count as surface, as in
-/// `voxelize()`; a line whose crossings do not sum to zero cannot decide and counts as
-/// inside). While there are more cycles than handles, voxels with such a step are removed
-/// where that lowers the number of cycles without splitting a connected component: single
-/// voxels first (those whose centre is outside the mesh, then those with the most steps
-/// out), then runs of them (connected groups, shortest first). The stubs left are twigs
-/// for `prune_skeleton()`.
-///
-/// The mesh's handles are kept as long as the skeleton has no more cycles than the mesh has
-/// handles. Overlapping components that close a ring (a handle made of separate parts)
-/// keep their cycle too, since the skeleton stays inside the parts there. Limits: a ring of
-/// parts thinner than a voxel, which the skeleton leaves, can be opened when the
-/// components' genus does not account for it; and where the skeletons of two touching
-/// parts cross (legs crossed at the contact), removing the crossing would split the
-/// skeleton, and the cycle stays.
+/// either side of the gap opens it. While the skeleton has more cycles than the mesh has
+/// handles, skeleton voxels with a step that leaves the mesh are removed where that opens a
+/// cycle without splitting a connected component. The method, what it keeps and its limits
+/// are described in the manual, section \ref manual_cut_spurious_cycles.
 ///
 /// \tparam VoxelSet a model of `VoxelSet`.
 /// \tparam FaceGraph a model of `FaceListGraph`, the mesh the skeleton was computed from.
 /// \param skeleton a one-voxel-thick voxel skeleton (`thin()`), in the frame of the mesh's
 ///        voxelization; the removed voxels leave it.
 /// \param mesh the mesh.
-/// \param np optional named parameters among:
-///   - `vertex_point_map`: the positions of the mesh's vertices (default:
-///     `get(CGAL::vertex_point, mesh)`).
-///   - `fill_holes` (package parameter, `bool`): count the fans that close the mesh's holes
-///     as surface, as `voxelize()` does (default: `true`).
-///   - `voxelized_surface` (package parameter, `const Voxelized_surface*`): the mesh as
-///     `voxelize()` rasterised it (its `voxelized_surface_output`), for the inside tests
-///     (default: built from `mesh`, `vertex_point_map` and `fill_holes` when needed). It
-///     must be in the skeleton's frame.
+/// \param np an optional sequence of \ref manual_named_parameters "named parameters"
+///        among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the positions of the vertices of `mesh`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the mesh's vertex descriptor as
+///                    key type and a CGAL point as value type}
+///     \cgalParamDefault{`get(CGAL::vertex_point, mesh)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{fill_holes}
+///     \cgalParamDescription{whether the fans that close the mesh's holes count as surface,
+///                           as `voxelize()` does (package parameter)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{voxelized_surface}
+///     \cgalParamDescription{the mesh as `voxelize()` rasterised it (its
+///                           `voxelized_surface_output`), for the inside tests (package
+///                           parameter)}
+///     \cgalParamType{`const Voxelized_surface*`}
+///     \cgalParamDefault{built from `mesh`, `vertex_point_map` and `fill_holes` when
+///                       needed}
+///     \cgalParamExtra{It must be in the skeleton's frame.}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \returns the number of cycles opened.
 /// \throws std::invalid_argument when a mesh vertex has a non-finite coordinate, or

@@ -102,10 +102,18 @@ inline void lower_envelope_pass(std::uint32_t* data, std::size_t n, std::ptrdiff
 ///
 /// \tparam VoxelSet a model of `VoxelSet`.
 /// \param voxels the solid (e.g. `voxelize()`'s output); it is not modified.
-/// \param np optional named parameters among:
-///   - `memory_limit` (package parameter, `double`, bytes): the most memory the function
-///     may allocate (default: `default_voxel_memory_limit`, 2 GiB); the need, 4 bytes per
-///     voxel of the set's bounding box grown by one voxel, is checked before allocating.
+/// \param np an optional sequence of \ref manual_named_parameters "named parameters"
+///        among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{memory_limit}
+///     \cgalParamDescription{the most memory the function may allocate, in bytes (package
+///                           parameter)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`default_voxel_memory_limit`, 2 GiB}
+///     \cgalParamExtra{The need, 4 bytes per voxel of the set's bounding box grown by one
+///                     voxel, is checked before allocating.}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \returns the distance field, over the tight bounding box of the set grown by one voxel.
 /// \pre `voxels` is not empty.

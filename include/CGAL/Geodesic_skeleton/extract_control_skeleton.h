@@ -188,31 +188,74 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 /// \tparam Point the point type of the output.
 /// \param mesh the mesh.
 /// \param out receives the control skeleton (cleared first).
-/// \param np optional named parameters: every parameter of the stages, passed on to them
-///   (`vertex_point_map`, `resolution`, `fill_holes`, `memory_limit` of the voxel stages;
-///   `small_piece_fraction` of `remove_small_pieces()`;
-///   `spur_length_factor` of `prune_skeleton()`; `smoothing_window` of
-///   `smooth_skeleton()`; `bend_threshold`, `straightness_tolerance`,
-///   `minimum_bone_length_factor`, `chord_length_factors` of `split_into_bones()`; the
-///   `vertex_point_map` is the mesh's: the curve-skeleton stages read the curve skeleton's
-///   own points and radii, and a `mat_radius_map` is not passed on), and:
-///   - `visitor`: an object with `stage_finished(stage, milliseconds)`, called after each
-///     stage (default: `Default_pipeline_visitor`). It is copied: keep its state behind a
-///     pointer or a reference.
-///   - `curve_skeleton_output` (package parameter): a pointer to a
-///     `Curve_skeleton<Point, vertex_descriptor>` that receives the pruned, smoothed curve
-///     skeleton (its points moved inside a closed mesh, as above), with the mesh vertices
-///     mapped to its vertices (default: none). For this
-///     output and the next two, a null pointer is the same as none.
-///   - `thinned_skeleton_output` (package parameter): a pointer to a
-///     `Curve_skeleton<Point, vertex_descriptor>` that receives the skeleton straight
-///     after thinning, before pruning (default: none).
-///   - `reeb_graph_output` (package parameter): a pointer to a `Reeb_graph<FaceGraph>` that
-///     receives the Reeb graph of the geodesic mapping function
-///     (`geodesic_mapping_function()`), the skeleton the paper compares with (default:
-///     none, and no Reeb graph is computed).
-///   - `number_of_reeb_intervals` (package parameter): intervals of that Reeb graph
-///     (default: 30).
+/// \param np an optional sequence of \ref manual_named_parameters "named parameters"
+///        among the ones listed below: every parameter of the stages, passed on to them (the
+///        `vertex_point_map` is the mesh's: the curve-skeleton stages read the curve
+///        skeleton's own points and radii, and a `mat_radius_map` is not passed on), and
+///        the outputs and visitor of the chain.
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map, resolution, fill_holes, memory_limit}
+///     \cgalParamDescription{the settings of the voxel stages (`voxelize()`,
+///                           `distance_transform()`, `thin()`, `to_graph()`,
+///                           `cut_spurious_cycles()`)}
+///     \cgalParamType{as for `voxelize()`}
+///     \cgalParamDefault{as for `voxelize()`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{small_piece_fraction}
+///     \cgalParamDescription{the setting of `remove_small_pieces()`}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{0.05}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{spur_length_factor}
+///     \cgalParamDescription{the setting of `prune_skeleton()`}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{1.2}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{smoothing_window}
+///     \cgalParamDescription{the setting of `smooth_skeleton()`}
+///     \cgalParamType{`int`}
+///     \cgalParamDefault{5}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{bend_threshold, straightness_tolerance, minimum_bone_length_factor, chord_length_factors}
+///     \cgalParamDescription{the settings of `split_into_bones()`}
+///     \cgalParamType{as for `split_into_bones()`}
+///     \cgalParamDefault{as for `split_into_bones()`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{visitor}
+///     \cgalParamDescription{an object with `stage_finished(stage, milliseconds)`, called
+///                           after each stage}
+///     \cgalParamType{a class with that member function}
+///     \cgalParamDefault{`Default_pipeline_visitor`}
+///     \cgalParamExtra{It is copied: keep its state behind a pointer or a reference.}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{curve_skeleton_output}
+///     \cgalParamDescription{receives the pruned, smoothed curve skeleton (its points moved
+///                           inside a closed mesh, as above), with the mesh vertices mapped
+///                           to its vertices (package parameter)}
+///     \cgalParamType{a pointer to a `Curve_skeleton<Point, vertex_descriptor>`}
+///     \cgalParamDefault{none}
+///     \cgalParamExtra{For this output and the next two, a null pointer is the same as
+///                     none.}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{thinned_skeleton_output}
+///     \cgalParamDescription{receives the skeleton straight after thinning, before pruning
+///                           (package parameter)}
+///     \cgalParamType{a pointer to a `Curve_skeleton<Point, vertex_descriptor>`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{reeb_graph_output}
+///     \cgalParamDescription{receives the Reeb graph of the geodesic mapping function
+///                           (`geodesic_mapping_function()`), the skeleton the paper
+///                           compares with (package parameter)}
+///     \cgalParamType{a pointer to a `Reeb_graph<FaceGraph>`}
+///     \cgalParamDefault{none, and no Reeb graph is computed}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_reeb_intervals}
+///     \cgalParamDescription{the intervals of that Reeb graph (package parameter)}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{30}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \returns the sizes and timings of the stages.
 /// \throws std::invalid_argument for bad input or parameters, with a message naming the

@@ -186,17 +186,43 @@ void run_dijkstra(const FaceGraph& g,
 ///        vertex gets the distance to its nearest source).
 /// \param distances receives the distance of every vertex. A vertex that no path reaches
 ///        (another connected component) gets `std::numeric_limits<value_type>::infinity()`.
-/// \param np optional named parameters among:
-///   - `vertex_point_map`: the positions of the vertices (default:
-///     `get(CGAL::vertex_point, g)`); used for the default edge weights.
-///   - `geom_traits`: the kernel (default: the kernel of the point type).
-///   - `vertex_index_map`: a bijection from vertices onto `[0, num_vertices(g))` (default:
-///     the mesh's internal index, or one initialised on the fly).
-///   - `edge_weight_map` (package parameter): a readable edge property map of non-negative
-///     finite lengths (default: the Euclidean length of the edge, from the point map).
-///   - `vertex_predecessor_map` (package parameter): a writable vertex property map that
-///     receives, for each reached vertex, its predecessor on a shortest path (a source and
-///     an unreached vertex get themselves) (default: not recorded).
+/// \param np an optional sequence of \ref manual_named_parameters "named parameters"
+///        among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the positions of the vertices, used for the default edge
+///                           weights}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the vertex descriptor as key
+///                    type and a CGAL point as value type}
+///     \cgalParamDefault{`get(CGAL::vertex_point, g)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{the kernel}
+///     \cgalParamType{a model of `Kernel`}
+///     \cgalParamDefault{the kernel of the point type}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a bijection from the vertices onto `[0, num_vertices(g))`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the vertex descriptor as key
+///                    type and an integer type as value type}
+///     \cgalParamDefault{the mesh's internal index, or one initialised on the fly}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_weight_map}
+///     \cgalParamDescription{the length of every edge, finite and non-negative (package
+///                           parameter)}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the edge descriptor as key type
+///                    and a number type as value type}
+///     \cgalParamDefault{the Euclidean length of the edge, from the point map}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_predecessor_map}
+///     \cgalParamDescription{receives, for each reached vertex, its predecessor on a
+///                           shortest path; a source and an unreached vertex get
+///                           themselves (package parameter)}
+///     \cgalParamType{a model of `WritablePropertyMap` with the vertex descriptor as key
+///                    and value type}
+///     \cgalParamDefault{not recorded}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \pre `g` has at least one vertex; every source is a vertex of `g`; every edge weight is
 ///      finite and non-negative; the vertex index map is a bijection onto
@@ -232,8 +258,35 @@ void geodesic_distances(const FaceGraph& g, const SourceVertices& sources,
 /// \param source the first vertex of the path.
 /// \param target the last vertex of the path.
 /// \param out receives the vertices of the path, from `source` to `target`.
-/// \param np the named parameters of `geodesic_distances()` (`vertex_point_map`,
-///        `geom_traits`, `vertex_index_map`, `edge_weight_map`).
+/// \param np an optional sequence of \ref manual_named_parameters "named parameters"
+///        among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the positions of the vertices, used for the default edge
+///                           weights}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the vertex descriptor as key
+///                    type and a CGAL point as value type}
+///     \cgalParamDefault{`get(CGAL::vertex_point, g)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{the kernel}
+///     \cgalParamType{a model of `Kernel`}
+///     \cgalParamDefault{the kernel of the point type}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a bijection from the vertices onto `[0, num_vertices(g))`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the vertex descriptor as key
+///                    type and an integer type as value type}
+///     \cgalParamDefault{the mesh's internal index, or one initialised on the fly}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_weight_map}
+///     \cgalParamDescription{the length of every edge, finite and non-negative (package
+///                           parameter)}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the edge descriptor as key type
+///                    and a number type as value type}
+///     \cgalParamDefault{the Euclidean length of the edge, from the point map}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \returns the length of the path, or `std::numeric_limits<double>::infinity()` when
 ///        `target` is not reachable from `source` (nothing is written then).
 /// \pre and \throws as `geodesic_distances()`; `target` must be a vertex of `g` too.
@@ -287,7 +340,35 @@ double shortest_path(const FaceGraph& g,
 /// \tparam NamedParameters a sequence of named parameters.
 /// \param g the mesh.
 /// \param sources the source vertex, or the source vertices.
-/// \param np the named parameters of `geodesic_distances()`.
+/// \param np an optional sequence of \ref manual_named_parameters "named parameters"
+///        among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the positions of the vertices, used for the default edge
+///                           weights}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the vertex descriptor as key
+///                    type and a CGAL point as value type}
+///     \cgalParamDefault{`get(CGAL::vertex_point, g)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{the kernel}
+///     \cgalParamType{a model of `Kernel`}
+///     \cgalParamDefault{the kernel of the point type}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a bijection from the vertices onto `[0, num_vertices(g))`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the vertex descriptor as key
+///                    type and an integer type as value type}
+///     \cgalParamDefault{the mesh's internal index, or one initialised on the fly}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_weight_map}
+///     \cgalParamDescription{the length of every edge, finite and non-negative (package
+///                           parameter)}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the edge descriptor as key type
+///                    and a number type as value type}
+///     \cgalParamDefault{the Euclidean length of the edge, from the point map}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \returns the vertex and its distance. Ties are broken by the smallest vertex index, so
 ///          the answer is deterministic. When only the sources are reachable, a source is
 ///          returned with distance 0.

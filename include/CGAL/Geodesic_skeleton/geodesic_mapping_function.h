@@ -34,11 +34,21 @@ namespace Geodesic_skeleton {
 /// \tparam VertexScalarMap a writable vertex property map with a floating-point value.
 /// \param mesh the mesh.
 /// \param field receives the value of the mapping function at every vertex.
-/// \param np optional named parameters among:
-///   - `source_vertices` (package parameter): a range of vertex descriptors, the sources
-///     (default: one per component, found as said above); every component must hold one.
-///   - the named parameters of `geodesic_distances()` (`vertex_point_map`, `geom_traits`,
-///     `vertex_index_map`, `edge_weight_map`).
+/// \param np an optional sequence of \ref manual_named_parameters "named parameters"
+///        among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{source_vertices}
+///     \cgalParamDescription{the sources; every component must hold one (package
+///                           parameter)}
+///     \cgalParamType{a range of vertex descriptors}
+///     \cgalParamDefault{one per component, found as said above}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map, geom_traits, vertex_index_map, edge_weight_map}
+///     \cgalParamDescription{the named parameters of `geodesic_distances()`}
+///     \cgalParamType{as for `geodesic_distances()`}
+///     \cgalParamDefault{as for `geodesic_distances()`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \pre as `geodesic_distances()`.
 /// \throws std::invalid_argument as `geodesic_distances()`, and when given sources leave a

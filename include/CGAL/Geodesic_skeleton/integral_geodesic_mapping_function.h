@@ -75,12 +75,23 @@ std::vector<double> vertex_areas(const FaceGraph& g, VertexPointMap vpm, VertexI
 /// \tparam VertexScalarMap a writable vertex property map with a floating-point value.
 /// \param mesh the mesh.
 /// \param field receives the value of the mapping function at every vertex.
-/// \param np optional named parameters among:
-///   - `number_of_base_vertices` (package parameter): k, the number of base vertices, in
-///     [1, 100000] (default: 50); raised to the number of connected components if lower
-///     and capped at the number of vertices. More is smoother and costs more.
-///   - the named parameters of `geodesic_distances()` (`vertex_point_map`, `geom_traits`,
-///     `vertex_index_map`, `edge_weight_map`).
+/// \param np an optional sequence of \ref manual_named_parameters "named parameters"
+///        among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{number_of_base_vertices}
+///     \cgalParamDescription{k, the number of base vertices, in [1, 100000]; raised to the
+///                           number of connected components if lower and capped at the
+///                           number of vertices (package parameter)}
+///     \cgalParamType{`int`}
+///     \cgalParamDefault{50}
+///     \cgalParamExtra{More is smoother and costs more.}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map, geom_traits, vertex_index_map, edge_weight_map}
+///     \cgalParamDescription{the named parameters of `geodesic_distances()`}
+///     \cgalParamType{as for `geodesic_distances()`}
+///     \cgalParamDefault{as for `geodesic_distances()`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \pre as `geodesic_distances()`.
 /// \throws std::invalid_argument as `geodesic_distances()`, or when k is out of range.

@@ -79,13 +79,25 @@ Voxel_frame world_aligned_frame(const FaceGraph& mesh, VertexPointMap vpm)
 ///         e.g. `Curve_skeleton<Point, MeshVertex>`.
 /// \param mesh the mesh.
 /// \param skeleton the curve skeleton, in the mesh's coordinates; its points outside move.
-/// \param np optional named parameters among:
-///   - `vertex_point_map`: the positions of the mesh's vertices (default:
-///     `get(CGAL::vertex_point, mesh)`).
-///   - `voxelized_surface` (package parameter, `const Voxelized_surface*`): the mesh as
-///     `voxelize()` rasterised it (its `voxelized_surface_output`); the quarter voxel is
-///     one of its frame (default: the mesh's faces in a grid along the world axes with
-///     `default_voxel_resolution` voxels along the longest side of the mesh's bounding box).
+/// \param np an optional sequence of \ref manual_named_parameters "named parameters"
+///        among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the positions of the vertices of `mesh`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the mesh's vertex descriptor as
+///                    key type and a CGAL point as value type}
+///     \cgalParamDefault{`get(CGAL::vertex_point, mesh)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{voxelized_surface}
+///     \cgalParamDescription{the mesh as `voxelize()` rasterised it (its
+///                           `voxelized_surface_output`); the quarter voxel is one of its
+///                           frame (package parameter)}
+///     \cgalParamType{`const Voxelized_surface*`}
+///     \cgalParamDefault{the mesh's faces in a grid along the world axes with
+///                       `default_voxel_resolution` voxels along the longest side of the
+///                       mesh's bounding box}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \returns the skeleton vertices moved, in increasing order.
 /// \throws std::invalid_argument without `voxelized_surface`, when a mesh vertex has a

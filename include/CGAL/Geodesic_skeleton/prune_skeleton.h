@@ -41,28 +41,12 @@ struct Pruning_report
 /// snipping of spurious end branches (the package's addition to Algorithm 1, not in the
 /// paper), the two repeated until nothing changes.
 ///
-/// Algorithm 1: (1-2) the points are classified by their degree in the 26-neighbourhood
-/// (`classify_skeleton_points()`); (3) the branched connection points are grouped into
-/// branched regions (their 26-connected components); (4) the terminators of a region are
-/// the skeleton points outside it that are 26-adjacent to it (end and middle points, by
-/// Definition 7); (5) the centroid of a region is, following Blum, the region voxel
-/// nearest the mean of its voxels, ties broken by the largest MAT radius, then by the
-/// smallest key; (6-7) Dijkstra from the centroid through the region (26-adjacency, steps
-/// of length 1, sqrt 2 and sqrt 3: a geodesic inside the skeleton) gives a shortest path
-/// to each terminator; (8) the region points on no path are removed.
-///
-/// Snipping, the package's addition to Algorithm 1 (the paper has no such step: its
-/// introduction's "iteratively snip off the spurious skeleton joints" are the joints of
-/// the branched regions, which step 8 removes; Algorithm 1 removes only branched
-/// connection points, never an end branch, so it leaves short twigs): an end branch (the
-/// voxels from an end point to the first point of degree 3 or more, the junction) is
-/// removed when its arc length is shorter than
-/// `spur_length_factor` times the MAT radius at the junction, i.e. when it does not reach
-/// out of the thickness it grows from, as the twigs that surface noise makes do. Branches
-/// are snipped shortest first (relative to the radius), each only while three branches or
-/// more leave its junction (the 26-connected cluster of points of degree 3 or more where
-/// it hangs), so a branch is snipped only when the skeleton goes on past its junction. Algorithm 1 and one round of snipping alternate until neither changes
-/// anything (a snipped twig can leave a small branched cluster where it hung).
+/// Algorithm 1 keeps, in each branched region (a 26-connected group of branched connection
+/// points), only the voxels on the shortest paths inside the skeleton from the region's
+/// centroid to its terminators. The snipping removes an end branch shorter than
+/// `spur_length_factor` times the MAT radius at its junction, shortest first, while the
+/// skeleton goes on past the junction. The steps are described in the manual, section
+/// \ref manual_prune_method.
 ///
 /// The result is deterministic (it does not depend on the set's iteration order).
 /// Pruning never disconnects a component (every terminator stays linked to its
@@ -72,13 +56,25 @@ struct Pruning_report
 ///
 /// \tparam VoxelSet a model of `VoxelSet`.
 /// \param skeleton a one-voxel-thick skeleton, e.g. from thinning; modified in place.
-/// \param np optional named parameters among:
-///   - `mat_radius_map` (package parameter): a readable property map from `Voxel_key` to
-///     the radius of the medial axis transform there, in voxels (e.g. the square root of
-///     the squared distance transform) (default: 1 voxel everywhere, which makes the
-///     snipping threshold an absolute length in voxels).
-///   - `spur_length_factor` (package parameter): the threshold of the snipping, in MAT radii
-///     at the junction; in [0, 100]; 0 turns snipping off (default: 1.2).
+/// \param np an optional sequence of \ref manual_named_parameters "named parameters"
+///        among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{mat_radius_map}
+///     \cgalParamDescription{the radius of the medial axis transform at each skeleton voxel,
+///                           in voxels, e.g. the square root of the squared distance
+///                           transform (package parameter)}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `Voxel_key` as key type and a
+///                    number as value type}
+///     \cgalParamDefault{1 voxel everywhere, which makes the snipping threshold an absolute
+///                       length in voxels}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{spur_length_factor}
+///     \cgalParamDescription{the threshold of the snipping, in MAT radii at the junction, in
+///                           [0, 100]; 0 turns snipping off (package parameter)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{1.2}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \returns what was removed, and how many rounds of snipping were made.
 /// \throws std::invalid_argument when `spur_length_factor` is out of range or a radius is

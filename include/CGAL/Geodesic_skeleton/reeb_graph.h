@@ -100,8 +100,28 @@ inline std::size_t interval_of(double value, double low, double high, std::size_
 /// \param number_of_intervals how many intervals the range of the field is cut into; in
 ///        [1, 1e6].
 /// \param reeb receives the graph (cleared first).
-/// \param np optional named parameters among `vertex_point_map` (default:
-///        `get(CGAL::vertex_point, mesh)`) and `vertex_index_map`.
+/// \param np an optional sequence of \ref manual_named_parameters "named parameters"
+///        among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the positions of the vertices of `mesh`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the mesh's vertex descriptor as
+///                    key type and a CGAL point as value type}
+///     \cgalParamDefault{`get(CGAL::vertex_point, mesh)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a bijection from the vertices onto [0, `num_vertices(mesh)`)}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the mesh's vertex descriptor as
+///                    key type and an integer type as value type}
+///     \cgalParamDefault{the mesh's internal index, or one initialised on the fly}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a bijection from the faces onto [0, `num_faces(mesh)`)}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the mesh's face descriptor as
+///                    key type and an integer type as value type}
+///     \cgalParamDefault{the mesh's internal index, or one initialised on the fly}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \pre the mesh has at least one vertex; every value of `field` is finite.
 /// \throws std::invalid_argument on an empty mesh, a non-finite value (a geodesic field

@@ -143,10 +143,16 @@ inline std::vector<std::size_t> solid_piece_sizes(const Voxel_distance_field& di
 /// \param skeleton a voxel skeleton (`thin()`); the small pieces leave it.
 /// \param distances the distance field of the solid it was thinned from
 ///        (`distance_transform()`): its non-zero voxels are the solid.
-/// \param np optional named parameters among:
-///   - `small_piece_fraction` (package parameter, `double`, in [0, 1]): the size, relative
-///     to the largest piece, under which a piece is removed (default 0.05; 0 keeps every
-///     piece).
+/// \param np an optional sequence of \ref manual_named_parameters "named parameters"
+///        among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{small_piece_fraction}
+///     \cgalParamDescription{the size, relative to the largest piece, under which a piece is
+///                           removed, in [0, 1]; 0 keeps every piece (package parameter)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{0.05}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \returns the number of pieces and what was removed.
 /// \throws std::invalid_argument when `small_piece_fraction` is out of range.

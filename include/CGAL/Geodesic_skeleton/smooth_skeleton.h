@@ -54,16 +54,32 @@ namespace Geodesic_skeleton {
 ///         vertex bundle has a `point` member (a CGAL point type) unless a
 ///         `vertex_point_map` is given.
 /// \param skeleton the skeleton, smoothed in place; its graph is not changed.
-/// \param np optional named parameters among:
-///   - `vertex_point_map`: a read-write property map from the skeleton's vertex descriptor
-///     to its point, a CGAL point type constructible from three `double`s (default:
-///     `get(&Bundle::point, skeleton)`, the bundle's `point` member).
-///   - `mat_radius_map` (package parameter): a read-write property map from the skeleton's
-///     vertex descriptor to the MAT radius there, a `double` in world units (default:
-///     `get(&Bundle::radius, skeleton)` when the vertex bundle has a `radius` member, as
-///     `Curve_skeleton_vertex` has; otherwise none, and only the points are smoothed).
-///   - `smoothing_window` (package parameter): the number of consecutive points averaged,
-///     an odd number in [1, 1001] (default: 5, the paper's); 1 changes nothing.
+/// \param np an optional sequence of \ref manual_named_parameters "named parameters"
+///        among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the point of each skeleton vertex, read and written}
+///     \cgalParamType{a model of `ReadWritePropertyMap` with the skeleton's vertex
+///                    descriptor as key type and a CGAL point type constructible from
+///                    three `double`s as value type}
+///     \cgalParamDefault{`get(&Bundle::point, skeleton)`, the bundle's `point` member}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{mat_radius_map}
+///     \cgalParamDescription{the MAT radius at each skeleton vertex, in world units, read
+///                           and written (package parameter)}
+///     \cgalParamType{a model of `ReadWritePropertyMap` with the skeleton's vertex
+///                    descriptor as key type and `double` as value type}
+///     \cgalParamDefault{`get(&Bundle::radius, skeleton)` when the vertex bundle has a
+///                       `radius` member, as `Curve_skeleton_vertex` has; otherwise
+///                       none, and only the points are smoothed}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{smoothing_window}
+///     \cgalParamDescription{the number of consecutive points averaged, an odd number in
+///                           [1, 1001]; 1 changes nothing (package parameter)}
+///     \cgalParamType{`int`}
+///     \cgalParamDefault{5, the paper's}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \throws std::invalid_argument when the window is even or out of range.
 ///

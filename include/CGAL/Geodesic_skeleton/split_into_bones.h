@@ -148,35 +148,20 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 /// Splits a (smoothed) curve skeleton into the joints and bones of an animation control
 /// skeleton, a rooted tree per connected component.
 ///
-/// 1. The end points and junctions of the curve skeleton (vertices of degree other than 2)
-///    are the initial joints (paper, III.B.ii). They cut the skeleton into branches; a
-///    closed loop without junction gets one joint, at its thickest point.
-/// 2. Each branch is split recursively. In a part of the branch, the chord-to-point
-///    distance accumulation (`chord_to_point_distance_accumulation()`) is computed for
-///    chords of arc length `chord_length_factors` times the mean MAT radius of the part
-///    (capped at half the part's length) and averaged over those lengths, as in
-///    multi-scale CPDA corner detection. Where it peaks at `bend_threshold` or more, a
-///    bend joint splits the part in two. Without such a peak, a part that strays from its
-///    chord by more than `straightness_tolerance` MAT radii is split where it strays
-///    farthest; otherwise it is one bone. No split leaves a bone shorter than
-///    `minimum_bone_length_factor` MAT radii. The split recurses into both halves.
-/// 3. Each component is rooted at its most central junction: the junction whose farthest
-///    joint, along the bones, is nearest (the centre of the graph; ties go to the larger
-///    radius). For a character it is the torso, and it gives the shallowest hierarchy,
-///    which keeps chains of transforms short for animation. A component without junction
-///    is rooted at its central joint. Bones follow the shortest paths from the root; when
-///    the shape has handles, the bones left off those paths (one per independent cycle)
-///    are recorded in `Control_skeleton::cut_bones`.
+/// The end points and junctions of the curve skeleton are the initial joints; each branch
+/// between them is split recursively where the chord-to-point distance accumulation
+/// (`chord_to_point_distance_accumulation()`) peaks at `bend_threshold` or more, or where
+/// it strays from its chord by more than `straightness_tolerance` MAT radii, never leaving
+/// a bone shorter than `minimum_bone_length_factor` MAT radii; each component is rooted at
+/// its most central junction. The steps are described in the manual, section
+/// \ref manual_split_into_bones.
 ///
 /// The points and radii are read through property maps, so the skeleton of
-/// `CGAL::extract_mean_curvature_flow_skeleton()`
-/// (`CGAL::Mean_curvature_flow_skeletonization<TriangleMesh>::Skeleton`, whose vertices
-/// have a `point` and no radius) splits as well, with a `mat_radius_map` that the caller
-/// gives: every length of the split is in MAT radii, so a radius is required, and a call
-/// on a skeleton without `radius` member and without `mat_radius_map` does not compile
-/// (a `static_assert` names `mat_radius_map`). For an MCF skeleton, the mean distance from
-/// a skeleton vertex's point to the points of the mesh vertices collapsed into it (its
-/// `vertices`) is a radius that suits.
+/// `CGAL::extract_mean_curvature_flow_skeleton()` splits as well, with a `mat_radius_map`
+/// that the caller gives (manual, section \ref manual_bones): every length of the split is
+/// in MAT radii, so a radius is required, and a call on a skeleton without `radius` member
+/// and without `mat_radius_map` does not compile (a `static_assert` names
+/// `mat_radius_map`).
 ///
 /// \tparam CurveSkeleton a `boost::adjacency_list` with `vecS` vertex storage (its vertex
 ///         descriptors are the indices 0 to N-1), e.g. `Curve_skeleton<Point, MeshVertex>`
@@ -189,23 +174,52 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 /// \param control receives the control skeleton (cleared first); empty for an empty
 ///        skeleton. `Control_joint::skeleton_vertex` is the vertex descriptor (index) of
 ///        the joint's vertex in `skeleton`.
-/// \param np optional named parameters among:
-///   - `vertex_point_map`: a readable property map from the skeleton's vertex descriptor
-///     to its point, a CGAL point type (default: `get(&Bundle::point, skeleton)`, the
-///     bundle's `point` member).
-///   - `mat_radius_map` (package parameter): a readable property map from the skeleton's
-///     vertex descriptor to the MAT radius there, a `double` in world units; the joints'
-///     radii and every length of the split (chords, straightness, shortest bone) come from
-///     it (default: `get(&Bundle::radius, skeleton)` when the vertex bundle has a `radius`
-///     member, as `Curve_skeleton_vertex` has; otherwise required).
-///   - `bend_threshold` (package parameter): the accumulation, in chord lengths, that
-///     makes a bend a joint, in [0, 1] (default 0.08: a corner turning by 28 degrees
-///     reaches it; 20 degrees give 0.058, a right angle 0.217).
-///   - `straightness_tolerance` (package parameter): in MAT radii, in [0, 100] (default 0.5).
-///   - `minimum_bone_length_factor` (package parameter): in MAT radii, in [0, 1000]
-///     (default 2).
-///   - `chord_length_factors` (package parameter): a `std::vector<double>` of chord
-///     lengths in MAT radii, each in [0.001, 1000] (default {3, 6}).
+/// \param np an optional sequence of \ref manual_named_parameters "named parameters"
+///        among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the point of each skeleton vertex}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the skeleton's vertex descriptor
+///                    as key type and a CGAL point type as value type}
+///     \cgalParamDefault{`get(&Bundle::point, skeleton)`, the vertex bundle's `point` member}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{mat_radius_map}
+///     \cgalParamDescription{the MAT radius at each skeleton vertex, in world units; the
+///                           joints' radii and every length of the split (chords,
+///                           straightness, shortest bone) come from it (package parameter)}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the skeleton's vertex descriptor
+///                    as key type and `double` as value type}
+///     \cgalParamDefault{`get(&Bundle::radius, skeleton)` when the vertex bundle has a
+///                       `radius` member, as `Curve_skeleton_vertex` has; otherwise
+///                       required}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{bend_threshold}
+///     \cgalParamDescription{the accumulation, in chord lengths, that makes a bend a joint,
+///                           in [0, 1] (package parameter)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{0.08: a corner turning by 30 degrees reaches it (with the
+///                       accumulation's default `number_of_chords`); 20 degrees give
+///                       0.054, a right angle 0.204}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{straightness_tolerance}
+///     \cgalParamDescription{how far a bone may stray from its chord, in MAT radii, in
+///                           [0, 100] (package parameter)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{0.5}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{minimum_bone_length_factor}
+///     \cgalParamDescription{the shortest bone a split may leave, in MAT radii, in
+///                           [0, 1000] (package parameter)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{2}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{chord_length_factors}
+///     \cgalParamDescription{the chord lengths of the accumulation, in MAT radii, each in
+///                           [0.001, 1000] (package parameter)}
+///     \cgalParamType{`std::vector<double>`}
+///     \cgalParamDefault{{3, 6}}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \throws std::invalid_argument when a parameter is out of range or the radius map gives
 ///         a negative or non-finite radius.

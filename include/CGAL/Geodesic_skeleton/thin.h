@@ -31,40 +31,30 @@ namespace Geodesic_skeleton {
 /// Thins `voxels` to a one-voxel-thick curve skeleton by distance-ordered homotopic
 /// thinning (the grassfire of Blum, in the discrete form of Pudney 1998): the voxels are
 /// visited by increasing distance to the outside, and a voxel is deleted when it is
-/// <i>simple</i> (26-connectivity for the set, 6-connectivity for the background: its
-/// deletion changes no component, cavity or tunnel) and is not the end of a curve on the
-/// medial axis (a voxel with exactly one neighbour, whose medial ball no nearby ball
-/// swallows: no voxel `q` one or two steps away along the 26 directions has
-/// `r(q) >= r(p) + 0.6 |q - p|`, so a branch ends about a radius before a rounded tip, and
-/// the medial sheets of blunt edges, whose radius grows by 0.71 per unit step, burn away).
-/// Each level of distance burns in rounds: the candidates of a round are the voxels simple
-/// (and not protected) at its start, deleted one by one if they still are simple, unless
-/// they have become an end point whose radius no nearby voxel exceeds by 0.3 per unit step:
-/// so the order of deletions inside a level leaves no hair at the corners of the shape. A
-/// deletion puts the neighbours back into the current level's queue, so the fire burns
-/// until nothing simple is left.
-///
-/// Guarantees: the result has as many 26-components, tunnels (independent cycles) and
-/// cavities as the input (only simple voxels are deleted, one at a time); every remaining
-/// voxel is either not simple or a curve end point (exactly one 26-neighbour) whose medial
-/// ball is maximal among its neighbours', so the result is thin; since deep voxels burn
-/// last, the skeleton lies on the ridge of the distance field, within about a voxel. A
-/// shape without tunnels or cavities thins to a tree, a ball to a single voxel.
-///
-/// The simple-point test grows components on the 27-bit mask of the 3 x 3 x 3 cube, each
-/// growth step a handful of shifts, at most a few dozen steps whatever the neighbourhood
-/// (see the benchmark for its measured time): constant time.
+/// <i>simple</i> (its deletion changes no component, cavity or tunnel) and is not the end
+/// of a curve on the medial axis. The result has as many 26-components, tunnels and
+/// cavities as the input, and lies on the ridge of the distance field, within about a
+/// voxel. The method (the protection of curve ends, the rounds of a level, the
+/// guarantees, the simple-point test) is described in the manual, section
+/// \ref manual_thin.
 ///
 /// \tparam VoxelSet a model of `VoxelSet`.
 /// \param voxels the solid, thinned in place (voxels are only erased).
 /// \param distances its distance field, from `distance_transform(voxels)` (a voxel outside
 ///        the field's box has distance 0 and burns first).
-/// \param np optional named parameters among:
-///   - `memory_limit` (package parameter, `double`, bytes): the most memory the function
-///     may allocate (default: `default_voxel_memory_limit`, 2 GiB); the need, about
-///     5 bytes per voxel of the set's bounding box (grown by two voxels) plus 12 per voxel
-///     of the set, is
-///     checked before allocating.
+/// \param np an optional sequence of \ref manual_named_parameters "named parameters"
+///        among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{memory_limit}
+///     \cgalParamDescription{the most memory the function may allocate, in bytes (package
+///                           parameter)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`default_voxel_memory_limit`, 2 GiB}
+///     \cgalParamExtra{The need, about 5 bytes per voxel of the set's bounding box (grown
+///                     by two voxels) plus 12 per voxel of the set, is checked before
+///                     allocating.}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \returns the number of voxels erased.
 /// \pre `voxels` is not empty.

@@ -43,34 +43,13 @@ namespace Geodesic_skeleton {
 /// between 26-adjacent voxels, except the shortcuts that would make little triangles; and
 /// every vertex of `mesh` mapped to exactly one graph vertex.
 ///
-/// <b>Points.</b> A graph vertex is at its voxel's centre, in the mesh's own coordinates,
-/// unless that centre is outside the mesh. Where the shape is thinner than about two voxels
-/// (a horn, an ear, a tail tip), the skeleton must run through voxels that the surface
-/// crosses to stay connected, and such a centre may lie outside the mesh; the vertex then
-/// moves to a point inside the mesh: among the lines along the three grid axes through the
-/// 3 x 3 points at -1/3, 0 and 1/3 of the voxel's cross-section, the midpoint of the
-/// longest piece that is in the voxel and inside the mesh; where these lines find none (the
-/// part only clips the voxel), the inside point nearest to the centre on such lines through
-/// the voxel and its 26 neighbours (so a point moves by at most 1.5 voxels along each
-/// axis). Inside and outside are decided by the winding number of the surface (hole-filling
-/// fans included, as in `voxelize()`), counted along grid lines; a line whose crossings do
-/// not sum to zero (through a gap of an open surface) cannot decide, and a vertex that no
-/// line decides, or near which no line finds inside (a part much thinner than a third of a
-/// voxel), stays at the centre.
-///
-/// <b>Edges.</b> Three pairwise 26-adjacent voxels make a triangle of the adjacency graph
-/// that is no cycle of the shape. Edges are removed, longest first (a corner diagonal before
-/// an edge diagonal before a face link), each only when it fills exactly one independent
-/// triangle, until no triangle is left: the graph has then no triangle, the same connected
-/// components as the voxels, and exactly as many independent cycles as the voxel skeleton
-/// has tunnels (its first Betti number, with the voxels as closed unit cubes).
-///
-/// <b>Mesh vertices.</b> A mesh vertex maps to the skeleton voxel that a breadth-first
-/// wave from all skeleton voxels, through the solid of `distances` (26-connected), reaches
-/// first at the vertex's voxel: a nearest skeleton voxel along a path inside the shape, so a
-/// vertex of a leg maps to the leg's skeleton, not to the nearest point of the other leg.
-/// A vertex whose voxel the wave does not reach (outside the solid) takes a reached
-/// 26-neighbour voxel's label, else the Euclidean nearest skeleton voxel.
+/// A graph vertex is at its voxel's centre, in the mesh's own coordinates, unless that
+/// centre is outside the mesh, where it moves inside (by at most 1.5 voxels along each
+/// axis). The graph has no triangle, the same connected components as the voxels, and as
+/// many independent cycles as the voxel skeleton has tunnels. A mesh vertex maps to the
+/// skeleton voxel nearest along a path inside the solid. The method (the points, the
+/// edges, the mapping of the mesh vertices) is described in the manual, section
+/// \ref manual_to_graph.
 ///
 /// \tparam VoxelSet a model of `VoxelSet`.
 /// \tparam FaceGraph a model of `FaceListGraph`: its vertices are mapped, its faces decide
@@ -88,31 +67,67 @@ namespace Geodesic_skeleton {
 /// \param mesh the mesh whose vertices are mapped.
 /// \param graph receives the skeleton (cleared first). Vertices are in increasing
 ///        `(z, y, x)` voxel order.
-/// \param np optional named parameters among:
-///   - `vertex_point_map`: the positions of the mesh vertices (default:
-///     `get(CGAL::vertex_point, mesh)`).
-///   - `fill_holes` (package parameter, `bool`): count the fans that close the mesh's holes
-///     as surface in the inside test, as `voxelize()` does (default: `true`).
-///   - `voxelized_surface` (package parameter, `const Voxelized_surface*`): the mesh as
-///     `voxelize()` rasterised it (its `voxelized_surface_output`), for the inside test
-///     (default: built from `mesh`, `vertex_point_map` and `fill_holes` when a centre is
-///     in doubt). It must be in the skeleton's frame.
-///   - `skeleton_point_map` (package parameter): a writable vertex property map of `graph`
-///     whose value type is a point constructible from three `double`s: receives each
-///     vertex's point (default: the bundle's `point` member; required when there is none).
-///   - `mat_radius_map` (package parameter): a writable vertex property map of `graph` with
-///     `double` values: receives the medial radius (world units) (default: the bundle's
-///     `radius` member, else not written).
-///   - `mesh_vertices_map` (package parameter): a writable vertex property map of `graph`
-///     whose value type is a container of `FaceGraph` vertex descriptors constructible from
-///     an iterator range: receives the mesh vertices mapped to each vertex (default: the
-///     bundle's `vertices` member, else not written).
-///   - `voxel_map` (package parameter): a writable vertex property map of `graph` with
-///     `Voxel_key` values: receives each vertex's voxel (default: the bundle's `voxel`
-///     member, else not written).
-///   - `memory_limit` (package parameter, `double`, bytes): the most memory the function
-///     may allocate (default: `default_voxel_memory_limit`, 2 GiB); the need, 4 bytes per
-///     voxel of the field's box and of the skeleton's box, is checked before allocating.
+/// \param np an optional sequence of \ref manual_named_parameters "named parameters"
+///        among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the positions of the vertices of `mesh`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the mesh's vertex descriptor as
+///                    key type and a CGAL point as value type}
+///     \cgalParamDefault{`get(CGAL::vertex_point, mesh)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{fill_holes}
+///     \cgalParamDescription{whether the fans that close the mesh's holes count as surface
+///                           in the inside test, as `voxelize()` does (package parameter)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{voxelized_surface}
+///     \cgalParamDescription{the mesh as `voxelize()` rasterised it (its
+///                           `voxelized_surface_output`), for the inside test (package
+///                           parameter)}
+///     \cgalParamType{`const Voxelized_surface*`}
+///     \cgalParamDefault{built from `mesh`, `vertex_point_map` and `fill_holes` when a
+///                       centre is in doubt}
+///     \cgalParamExtra{It must be in the skeleton's frame.}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{skeleton_point_map}
+///     \cgalParamDescription{receives the point of each vertex of `graph` (package parameter)}
+///     \cgalParamType{a model of `WritablePropertyMap` with the vertex descriptor of `graph`
+///                    as key type and a point type constructible from three `double`s as
+///                    value type}
+///     \cgalParamDefault{the vertex bundle's `point` member (required when the bundle has none)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{mat_radius_map}
+///     \cgalParamDescription{receives the medial radius at each vertex of `graph`, in world
+///                           units (package parameter)}
+///     \cgalParamType{a model of `WritablePropertyMap` with the vertex descriptor of `graph`
+///                    as key type and `double` as value type}
+///     \cgalParamDefault{the vertex bundle's `radius` member; without one, not written}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{mesh_vertices_map}
+///     \cgalParamDescription{receives the mesh vertices mapped to each vertex of `graph`
+///                           (package parameter)}
+///     \cgalParamType{a model of `WritablePropertyMap` with the vertex descriptor of `graph`
+///                    as key type and, as value type, a container of the vertex descriptors
+///                    of `FaceGraph` constructible from an iterator range}
+///     \cgalParamDefault{the vertex bundle's `vertices` member; without one, not written}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{voxel_map}
+///     \cgalParamDescription{receives the voxel of each vertex of `graph` (package parameter)}
+///     \cgalParamType{a model of `WritablePropertyMap` with the vertex descriptor of `graph`
+///                    as key type and `Voxel_key` as value type}
+///     \cgalParamDefault{the vertex bundle's `voxel` member; without one, not written}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{memory_limit}
+///     \cgalParamDescription{the most memory the function may allocate, in bytes (package
+///                           parameter)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`default_voxel_memory_limit`, 2 GiB}
+///     \cgalParamExtra{The need, 4 bytes per voxel of the field's box and of the
+///                     skeleton's box, is checked before allocating.}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \pre `skeleton` is not empty, and has the frame of `distances`.
 /// \throws std::invalid_argument when `skeleton` is empty, a mesh vertex has a

@@ -369,7 +369,23 @@ std::ostream& write_glTF(std::ostream& os, const TriangleMesh& mesh, const Contr
 /// \param mesh the mesh (a model of `FaceListGraph`).
 /// \param skeleton its control skeleton; joints in any order, parents forming trees.
 /// \param weights the weights of every vertex (bone indices into `skeleton.bones`).
-/// \param np optional named parameters: `vertex_point_map`, `vertex_index_map` (as in CGAL).
+/// \param np an optional sequence of \ref manual_named_parameters "named parameters"
+///        among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the positions of the vertices of `mesh`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the mesh's vertex descriptor as
+///                    key type and a CGAL point as value type}
+///     \cgalParamDefault{`get(CGAL::vertex_point, mesh)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a bijection from the vertices onto [0, `num_vertices(mesh)`):
+///                           the order of the vertices in the file}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the mesh's vertex descriptor as
+///                    key type and an integer type as value type}
+///     \cgalParamDefault{the mesh's internal index, or one initialised on the fly}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \throws std::invalid_argument for another extension, a skeleton without joint or whose
 ///         parents do not form trees (a parent that does not exist, a cycle), bones that do
 ///         not match the parents (one bone from its parent to each joint that has one), more

@@ -329,6 +329,10 @@ inline std::vector<Point_side> sides_of_points(const Grid_line_crossings& g, con
 // voxel centre: the voxel itself, or the voxel and its 26 neighbours.
 constexpr double own_voxel_half_width = 0.5;
 constexpr double with_neighbours_half_width = 1.5;
+// The spacing of the lines that inside_points_in_cubes() casts through a cube: this many
+// per voxel along each axis (3: the lines at -1/3, 0 and 1/3 of a voxel's cross-section),
+// so that a part a third of a voxel thick is still met, for 9 lines per axis and voxel.
+constexpr int lines_per_voxel = 3;
 
 // How inside_points_in_cubes() chooses among the inside pieces of its lines.
 enum class Inside_piece_choice { longest, nearest };
@@ -347,9 +351,10 @@ inline std::vector<Vec3> inside_points_in_cubes(const Grid_line_crossings& g, co
                                                 std::vector<bool>& found)
 {
   std::vector<double> offsets;
-  for(int k = -int(std::ceil(3 * half_width)); k <= int(std::ceil(3 * half_width)); ++k)
-    if(std::abs(k / 3.) < half_width)
-      offsets.push_back(k / 3.);
+  const int reach = int(std::ceil(lines_per_voxel * half_width));
+  for(int k = -reach; k <= reach; ++k)
+    if(std::abs(k / double(lines_per_voxel)) < half_width)
+      offsets.push_back(k / double(lines_per_voxel));
   const std::size_t per_cube = offsets.size() * offsets.size();
   std::vector<Vec3> best_point(centres);
   std::vector<double> best_score(centres.size(), -HUGE_VAL);

@@ -100,6 +100,10 @@ inline Vec3 nearest_point_on_soup(const Grid_line_crossings& lines, const Vec3& 
 // enough that the rounding of coordinates cannot take it back out, shallow enough to stay
 // on the medial side of a limb one voxel thin.
 constexpr double depth_inside_in_voxels = 0.25;
+// The step inwards is halved while it lands outside (past a part thinner than the depth),
+// down to this fraction of the depth (about 20 halvings); a point still outside then is
+// placed by a search of the voxels around it instead.
+constexpr double smallest_inward_step_in_depths = 1e-6;
 
 // Moves every point of a curve skeleton that lies outside a closed triangle mesh just
 // inside it: to the nearest point of the surface, then `depth` voxels further along the
@@ -159,7 +163,7 @@ std::vector<std::size_t> move_curve_points_inside(const Voxel_frame& frame, cons
   // All the candidates of one step size in one inside test.
   std::vector<bool> placed(outside.size(), false);
   std::vector<std::size_t> moved;
-  for(double step = depth; step > 1e-6 * depth; step /= 2)
+  for(double step = depth; step > smallest_inward_step_in_depths * depth; step /= 2)
   {
     std::vector<std::size_t> trying;
     std::vector<Vec3> candidates;

@@ -20,6 +20,12 @@ namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
 
+// The longest chord of the accumulation in a part of a branch, in lengths of the part: a
+// chord of `chord_length_factors` radii is shortened to half the part, so that a part
+// shorter than the chords still gets an accumulation around its middle (a chord longer
+// than the part fits nowhere in it and gives none).
+constexpr double longest_chord_in_part_lengths = 0.5;
+
 struct Bone_splitting_settings
 {
   double bend_threshold;           // CPDA value (in chord lengths) that makes a bend a joint
@@ -83,7 +89,7 @@ private:
     std::vector<double> bend(part.size(), 0.0);
     for(double factor : m_settings.chord_length_factors)
     {
-      const double L = std::min(factor * radius, 0.5 * part_length);
+      const double L = std::min(factor * radius, longest_chord_in_part_lengths * part_length);
       if(!(L > 0))
         continue;
       std::vector<double> h;

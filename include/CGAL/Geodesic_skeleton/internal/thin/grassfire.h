@@ -33,6 +33,10 @@ namespace internal {
 // the round's own deletions exposed at a corner of the shape, goes.
 constexpr double tip_growth_when_choosing = 0.6;
 constexpr double tip_growth_when_deleting = 0.3;
+// How far on_ridge() looks for a larger medial ball, in steps along each of the 26
+// directions: two steps smooth the rounding of the discrete radii, which one step alone
+// would take for growth or for its absence.
+constexpr std::ptrdiff_t ridge_reach_in_steps = 2;
 
 // The working state of the thinning over a padded box: bit 0 = in the set, bit 1 = queued,
 // bit 2 = deleted by the thinning.
@@ -155,7 +159,7 @@ public:
   {
     const double r = std::sqrt(double(m_d2[i]));
     for(int b = 0; b < 26; ++b)
-      for(std::ptrdiff_t step = 1; step <= 2; ++step) // one and two voxels away
+      for(std::ptrdiff_t step = 1; step <= ridge_reach_in_steps; ++step)
       {
         const std::uint32_t dq = m_d2[std::size_t(std::ptrdiff_t(i) + step * m_offsets[b])];
         if(dq > m_d2[i] && std::sqrt(double(dq)) - r >= growth * double(step) * m_offset_length[b])
