@@ -223,13 +223,16 @@ int main(int argc, char* argv[])
                                 gs::parameters::reeb_graph_output(&ours.reeb)));
 
     std::vector<Segment> our_segments;
-    for(const auto& bone : ours.control.bones)
-      for(std::size_t k = 1; k < bone.points.size(); ++k)
-        our_segments.emplace_back(bone.points[k - 1], bone.points[k]);
+    for(const auto bone : CGAL::make_range(edges(ours.control)))
+    {
+      const std::vector<Point>& points = ours.control[bone].points;
+      for(std::size_t k = 1; k < points.size(); ++k)
+        our_segments.emplace_back(points[k - 1], points[k]);
+    }
     CGAL::Side_of_triangle_mesh<Mesh, Kernel> side(mesh);
     std::size_t inside = 0;
-    for(const auto& j : ours.control.joints)
-      inside += side(j.point) != CGAL::ON_UNBOUNDED_SIDE;
+    for(const auto j : CGAL::make_range(vertices(ours.control)))
+      inside += side(ours.control[j].point) != CGAL::ON_UNBOUNDED_SIDE;
 
     // MCF, once (it is slow).
     double mcf_ms = 0;
@@ -255,9 +258,9 @@ int main(int argc, char* argv[])
     }
 
     std::cout << "| " << name << " | " << num_vertices(mesh) << " | " << ours.ms << " | " << mcf_ms << " | "
-              << (run_mcf ? mcf_ms / ours.ms : 0.0) << " | " << ours.control.bones.size() << " | " << mcf_vertices
+              << (run_mcf ? mcf_ms / ours.ms : 0.0) << " | " << num_edges(ours.control) << " | " << mcf_vertices
               << " | " << mcf_ends << " | " << mcf_junctions << " | "
-              << double(inside) / double(std::max<std::size_t>(1, ours.control.joints.size())) << " | "
+              << double(inside) / double(std::max<std::size_t>(1, num_vertices(ours.control))) << " | "
               << std::setprecision(4) << coverage(mesh, our_segments) << " | " << mcf_coverage
               << std::setprecision(2) << " |" << std::endl;
 
@@ -288,9 +291,9 @@ int main(int argc, char* argv[])
 
     const std::size_t segments = gs::internal::skeleton_branches(ours.curve).size();
     std::size_t bends = 0;
-    for(const auto& j : ours.control.joints)
-      bends += j.kind == gs::Joint_kind::bend;
-    table_2 << "| " << name << " | " << segments << " | " << bends << " | " << ours.control.bones.size() << " |\n";
+    for(const auto j : CGAL::make_range(vertices(ours.control)))
+      bends += ours.control[j].kind == gs::Joint_kind::bend;
+    table_2 << "| " << name << " | " << segments << " | " << bends << " | " << num_edges(ours.control) << " |\n";
   }
   if(!ratios.empty())
     std::cout << "\nmedian MCF/ours: " << median(ratios) << " over " << ratios.size() << " meshes\n";

@@ -127,18 +127,19 @@ struct Joint_counts
 // that form cycles of degree-2 joints, one chain each.
 Joint_counts count_joints(const Control& control)
 {
-  std::vector<const gs::Control_bone<Point>*> bones;
-  for(const auto* list : {&control.bones, &control.cut_bones})
-    for(const auto& bone : *list)
-      bones.push_back(&bone);
-  std::vector<std::vector<std::size_t>> bones_at(control.joints.size());
+  std::vector<std::pair<std::size_t, std::size_t>> bones; // the two joints of each bone, cut ones too
+  for(const auto e : CGAL::make_range(edges(control)))
+    bones.emplace_back(source(e, control), target(e, control));
+  for(const auto& cut : control[boost::graph_bundle].cut_bones)
+    bones.emplace_back(cut.source, cut.target);
+  std::vector<std::vector<std::size_t>> bones_at(num_vertices(control));
   for(std::size_t b = 0; b < bones.size(); ++b)
   {
-    bones_at[bones[b]->parent].push_back(b);
-    bones_at[bones[b]->child].push_back(b);
+    bones_at[bones[b].first].push_back(b);
+    bones_at[bones[b].second].push_back(b);
   }
   Joint_counts c;
-  c.joints = control.joints.size();
+  c.joints = num_vertices(control);
   c.bones = bones.size();
   std::size_t middle_joints = 0;
   for(const auto& at : bones_at)
@@ -152,7 +153,7 @@ Joint_counts count_joints(const Control& control)
     while(!walked[bone])
     {
       walked[bone] = true;
-      joint = bones[bone]->parent == joint ? bones[bone]->child : bones[bone]->parent;
+      joint = bones[bone].first == joint ? bones[bone].second : bones[bone].first;
       if(bones_at[joint].size() != 2)
         break;
       bone = bones_at[joint][0] == bone ? bones_at[joint][1] : bones_at[joint][0];
@@ -170,7 +171,7 @@ Joint_counts count_joints(const Control& control)
   for(std::size_t b = 0; b < bones.size(); ++b)
     if(!walked[b])
     {
-      walk(bones[b]->parent, b);
+      walk(bones[b].first, b);
       ++chains;
     }
   c.joints_per_chain = chains > 0 ? double(middle_joints) / double(chains) : 0.0;

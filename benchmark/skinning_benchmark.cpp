@@ -68,7 +68,7 @@ void run(const std::string& name, const Mesh& mesh, int repeats, int resolution)
   for(const gs::Bone_weights& w : weights)
     influences += double(w.size());
   std::cout << "| " << name << " | " << num_vertices(mesh) << " | " << num_faces(mesh) << " | "
-            << control.bones.size() << " | " << skeleton_ms << " | " << weights_ms << " | "
+            << num_edges(control) << " | " << skeleton_ms << " | " << weights_ms << " | "
             << weights_ms / skeleton_ms << " | " << report.solid_voxels << " | "
             << double(report.voxel_visits) / double(report.solid_voxels) << " | "
             << influences / double(num_vertices(mesh)) << " |" << std::endl;

@@ -16,6 +16,8 @@
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <boost/graph/depth_first_search.hpp>
+
 #include <algorithm>
 #include <cstdlib>
 #include <iterator>
@@ -34,6 +36,20 @@ using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 
 namespace GS = CGAL::Geodesic_skeleton;
+
+//! [bone_printer]
+// Prints each bone as a depth-first walk of the forest meets it, parent before child.
+struct Bone_printer : boost::default_dfs_visitor
+{
+  template <typename Bone, typename Skeleton>
+  void tree_edge(Bone bone, const Skeleton& control) const
+  {
+    const auto parent = source(bone, control), child = target(bone, control);
+    std::cout << GS::to_string(control[parent].kind) << ' ' << parent << " -> " << GS::to_string(control[child].kind)
+              << ' ' << child << ", " << control[bone].length << " long\n";
+  }
+};
+//! [bone_printer]
 
 int main(int argc, char* argv[])
 {
@@ -54,11 +70,11 @@ int main(int argc, char* argv[])
         mesh, control,
         GS::parameters::combine(GS::parameters::resolution(64), GS::parameters::smoothing_window(5)));
 
-    // Walk the tree: every joint but the root has a parent; bones lead to their child.
-    for(const GS::Control_bone<Point>& bone : control.bones)
-      std::cout << GS::to_string(control.joints[bone.parent].kind) << ' ' << bone.parent << " -> "
-                << GS::to_string(control.joints[bone.child].kind) << ' ' << bone.child << ", "
-                << bone.length << " long\n";
+    // Walk the forest, a boost::adjacency_list whose edges are the bones (parent joint to
+    // child joint), depth first from each root.
+    std::vector<boost::default_color_type> colour(num_vertices(control), boost::white_color);
+    for(std::size_t root : control[boost::graph_bundle].roots)
+      boost::depth_first_visit(control, root, Bone_printer(), colour.data());
 
     // Write it for an animation tool.
     if(argc > 2)
@@ -67,7 +83,7 @@ int main(int argc, char* argv[])
       GS::IO::write_BVH(bvh, control);
     }
     //! [control_skeleton]
-    std::cout << control.joints.size() << " joints, " << control.bones.size() << " bones, in "
+    std::cout << num_vertices(control) << " joints, " << num_edges(control) << " bones, in "
               << report.total_ms << " ms\n";
 
     //! [split_into_bones]
@@ -83,12 +99,13 @@ int main(int argc, char* argv[])
 
     // ... and the chord-to-point distance accumulation along the longest bone, with chords
     // of a third of its length: where it peaks, the bone bends most.
-    const auto& longest = *std::max_element(control.bones.begin(), control.bones.end(),
-                                            [](const auto& a, const auto& b) { return a.length < b.length; });
+    const auto bones = edges(control);
+    const GS::Control_bone<Point>& longest = control[*std::max_element(
+        bones.first, bones.second, [&](const auto& a, const auto& b) { return control[a].length < control[b].length; })];
     std::vector<double> bend;
     GS::chord_to_point_distance_accumulation(longest.points, longest.length / 3, std::back_inserter(bend));
     //! [split_into_bones]
-    std::cout << "coarser rig: " << coarse.bones.size() << " bones; longest bone: " << longest.points.size()
+    std::cout << "coarser rig: " << num_edges(coarse) << " bones; longest bone: " << longest.points.size()
               << " points, largest accumulation " << *std::max_element(bend.begin(), bend.end()) << "\n";
   }
   catch(const std::exception& e)

@@ -593,10 +593,10 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
     if(o.svg_stage == "weights")
       gs::IO::write_svg_preview_of_labels(picture, mesh, skinning.segment, control, 360,
                                           name + ": skinning, the bone of largest weight, " +
-                                              std::to_string(control.bones.size()) + " bones");
+                                              std::to_string(num_edges(control)) + " bones");
     else if(o.svg_stage == "control")
       gs::IO::write_svg_preview(picture, mesh, control, 360,
-                                name + ": control skeleton, " + std::to_string(control.bones.size()) + " bones");
+                                name + ": control skeleton, " + std::to_string(num_edges(control)) + " bones");
     else if(o.svg_stage == "pruned")
       gs::IO::write_svg_preview_of_graph(picture, mesh, curve, 360,
                                          name + ": pruned, smoothed curve skeleton, " +
@@ -618,19 +618,19 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
 
   summary.vertices = num_vertices(mesh);
   summary.faces = num_faces(mesh);
-  summary.joints = control.joints.size();
-  summary.bones = control.bones.size();
+  summary.joints = num_vertices(control);
+  summary.bones = num_edges(control);
   summary.chain_ms = report.total_ms;
   if(!o.batch.empty())
     return summary;
   if(given_skeleton)
     std::cerr << "skeletonize: " << input << ": " << num_vertices(mesh) << " vertices, skinned to "
-              << o.skeleton << " (" << control.joints.size() << " joints, " << control.bones.size() << " bones) in "
+              << o.skeleton << " (" << num_vertices(control) << " joints, " << num_edges(control) << " bones) in "
               << skinning.report.milliseconds << " ms\n";
   else
     std::cerr << "skeletonize: " << input << ": " << num_vertices(mesh) << " vertices, " << report.solid_voxels
               << " solid voxels, " << report.thinned.points << " thinned points, " << report.pruned.points
-              << " pruned points, " << control.joints.size() << " joints, " << control.bones.size() << " bones, "
+              << " pruned points, " << num_vertices(control) << " joints, " << num_edges(control) << " bones, "
               << summary.read_ms << " ms reading, " << report.total_ms << " ms skeletonizing\n";
   return summary;
 }

@@ -62,17 +62,18 @@ int main(int argc, char* argv[])
       GS::IO::write_glTF(argv[2], mesh, control, weights);
     //! [skinning]
 
-    std::vector<std::size_t> driven(control.bones.size(), 0);
+    const auto bones = GS::numbered_bones(control);
+    std::vector<std::size_t> driven(bones.size(), 0);
     std::size_t influences = 0;
     for(Mesh::Vertex_index v : vertices(mesh))
     {
       ++driven[std::size_t(segment[v])];
       influences += weights[v].size();
     }
-    for(std::size_t b = 0; b < control.bones.size(); ++b)
-      std::cout << "bone " << b << " (" << control.bones[b].parent << " -> " << control.bones[b].child << "): "
+    for(std::size_t b = 0; b < bones.size(); ++b)
+      std::cout << "bone " << b << " (" << source(bones[b], control) << " -> " << target(bones[b], control) << "): "
                 << driven[b] << " vertices\n";
-    std::cout << num_vertices(mesh) << " vertices, " << control.bones.size() << " bones, "
+    std::cout << num_vertices(mesh) << " vertices, " << bones.size() << " bones, "
               << double(influences) / double(num_vertices(mesh)) << " bones per vertex on average, weights in "
               << report.milliseconds << " ms\n";
   }

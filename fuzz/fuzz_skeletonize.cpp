@@ -133,11 +133,11 @@ void run_one(const std::uint8_t* data, std::size_t size)
     return; // documented: more than memory_limit
   }
 
-  for(const auto& joint : control.joints)
-    if(!finite(joint.point))
+  for(const auto joint : CGAL::make_range(vertices(control)))
+    if(!finite(control[joint].point))
       finding("a joint of the control skeleton has a non-finite coordinate");
-  for(const auto& bone : control.bones)
-    for(const Point& p : bone.points)
+  for(const auto bone : CGAL::make_range(edges(control)))
+    for(const Point& p : control[bone].points)
       if(!finite(p))
         finding("a bone of the control skeleton has a non-finite point");
   for(auto v : CGAL::make_range(vertices(curve)))

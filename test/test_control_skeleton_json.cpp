@@ -63,22 +63,23 @@ BOOST_AUTO_TEST_CASE(the_json_that_skeletonize_writes_reads_back)
   for(const json& j : {written, json{{"input", "cow.off"}, {"control", written}}})
   {
     const Control back = read(j);
-    BOOST_REQUIRE_EQUAL(back.joints.size(), control.joints.size());
-    BOOST_REQUIRE_EQUAL(back.bones.size(), control.bones.size());
-    BOOST_CHECK_EQUAL(back.cut_bones.size(), control.cut_bones.size());
-    BOOST_CHECK(back.roots == control.roots);
-    for(std::size_t i = 0; i < control.joints.size(); ++i)
+    BOOST_REQUIRE_EQUAL(num_vertices(back), num_vertices(control));
+    BOOST_REQUIRE_EQUAL(num_edges(back), num_edges(control));
+    BOOST_CHECK_EQUAL(back[boost::graph_bundle].cut_bones.size(), control[boost::graph_bundle].cut_bones.size());
+    BOOST_CHECK(back[boost::graph_bundle].roots == control[boost::graph_bundle].roots);
+    for(std::size_t i = 0; i < num_vertices(control); ++i)
     {
-      BOOST_CHECK_EQUAL(back.joints[i].point, control.joints[i].point);
-      BOOST_CHECK_EQUAL(back.joints[i].parent, control.joints[i].parent);
-      BOOST_CHECK(back.joints[i].kind == control.joints[i].kind);
-      BOOST_CHECK_EQUAL(back.joints[i].radius, control.joints[i].radius);
+      BOOST_CHECK_EQUAL(back[i].point, control[i].point);
+      BOOST_CHECK_EQUAL(gs::parent_joint(i, back), gs::parent_joint(i, control));
+      BOOST_CHECK(back[i].kind == control[i].kind);
+      BOOST_CHECK_EQUAL(back[i].radius, control[i].radius);
     }
-    for(std::size_t b = 0; b < control.bones.size(); ++b)
+    const auto back_bones = gs::numbered_bones(back), bones = gs::numbered_bones(control);
+    for(std::size_t b = 0; b < bones.size(); ++b)
     {
-      BOOST_CHECK_EQUAL(back.bones[b].parent, control.bones[b].parent);
-      BOOST_CHECK_EQUAL(back.bones[b].child, control.bones[b].child);
-      BOOST_CHECK(back.bones[b].points.empty());
+      BOOST_CHECK_EQUAL(source(back_bones[b], back), source(bones[b], control));
+      BOOST_CHECK_EQUAL(target(back_bones[b], back), target(bones[b], control));
+      BOOST_CHECK(back[back_bones[b]].points.empty());
     }
   }
 }
@@ -91,16 +92,17 @@ BOOST_AUTO_TEST_CASE(a_hand_written_skeleton_gets_its_bones_kinds_and_roots)
                                  {"position": [0, 0, 3], "parent": 0},
                                  {"position": [0, 0, 0], "parent": -1, "radius": 0.5}]})");
   const Control s = read(j);
-  BOOST_REQUIRE_EQUAL(s.bones.size(), 2u);
-  BOOST_CHECK_EQUAL(s.bones[0].parent, 2u);
-  BOOST_CHECK_EQUAL(s.bones[0].child, 0u);
-  BOOST_CHECK_CLOSE(s.bones[1].length, 2.0, 1e-9);
-  BOOST_REQUIRE_EQUAL(s.roots.size(), 1u);
-  BOOST_CHECK_EQUAL(s.roots[0], 2u);
-  BOOST_CHECK(s.joints[2].kind == gs::Joint_kind::root);
-  BOOST_CHECK(s.joints[0].kind == gs::Joint_kind::bend);
-  BOOST_CHECK(s.joints[1].kind == gs::Joint_kind::end);
-  BOOST_CHECK_EQUAL(s.joints[2].radius, 0.5);
+  BOOST_REQUIRE_EQUAL(num_edges(s), 2u);
+  const auto bones = gs::numbered_bones(s);
+  BOOST_CHECK_EQUAL(source(bones[0], s), 2u);
+  BOOST_CHECK_EQUAL(target(bones[0], s), 0u);
+  BOOST_CHECK_CLOSE(s[bones[1]].length, 2.0, 1e-9);
+  BOOST_REQUIRE_EQUAL(s[boost::graph_bundle].roots.size(), 1u);
+  BOOST_CHECK_EQUAL(s[boost::graph_bundle].roots[0], 2u);
+  BOOST_CHECK(s[2].kind == gs::Joint_kind::root);
+  BOOST_CHECK(s[0].kind == gs::Joint_kind::bend);
+  BOOST_CHECK(s[1].kind == gs::Joint_kind::end);
+  BOOST_CHECK_EQUAL(s[2].radius, 0.5);
 }
 
 BOOST_AUTO_TEST_CASE(bad_skeletons_are_refused_with_the_reason)
@@ -119,6 +121,9 @@ BOOST_AUTO_TEST_CASE(bad_skeletons_are_refused_with_the_reason)
   j = chain();
   j["joints"][0]["parent"] = 2; // 0 -> 2 -> 1 -> 0
   BOOST_CHECK(refused_with(j, "cycle"));
+  j = chain();
+  j["joints"][1]["parent"] = 1;
+  BOOST_CHECK(refused_with(j, "joint 1 has parent 1, itself"));
   j = chain();
   j["joints"][1]["kind"] = "elbow";
   BOOST_CHECK(refused_with(j, "unknown kind 'elbow'"));

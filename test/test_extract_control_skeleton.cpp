@@ -2,6 +2,7 @@
 // Debian's demo meshes and on shapes with handles.
 #include <CGAL/Geodesic_skeleton/extract_control_skeleton.h>
 
+#include <Geodesic_skeleton_test/joints.h>
 #include <Geodesic_skeleton_test/shapes.h>
 #include <Geodesic_skeleton_test/winding_number.h>
 
@@ -49,14 +50,15 @@ Extracted extract(const FaceGraph& mesh)
 double fraction_of_joints_inside(const Mesh& mesh, const Control& c)
 {
   std::size_t inside = 0;
-  for(const auto& j : c.joints)
+  for(const auto& j : test::joints(c))
     inside += test::is_inside_by_winding(mesh, j.point);
-  return double(inside) / double(c.joints.size());
+  return double(inside) / double(num_vertices(c));
 }
 
 std::size_t joints_of_kind(const Control& c, gs::Joint_kind kind)
 {
-  return std::size_t(std::count_if(c.joints.begin(), c.joints.end(), [&](const auto& j) { return j.kind == kind; }));
+  const auto joints = vertices(c);
+  return std::size_t(std::count_if(joints.first, joints.second, [&](std::size_t j) { return c[j].kind == kind; }));
 }
 
 } // namespace
@@ -78,11 +80,11 @@ BOOST_AUTO_TEST_CASE(demo_animals_give_one_tree_of_a_rig_s_size_inside_the_mesh)
     {
       const Mesh mesh = test::demo_mesh<Mesh>(x.mesh);
       const Extracted e = extract(mesh);
-      BOOST_TEST(e.control.roots.size() == 1u);
-      BOOST_TEST(e.control.bones.size() >= x.min_bones);
-      BOOST_TEST(e.control.bones.size() <= x.max_bones);
+      BOOST_TEST(e.control[boost::graph_bundle].roots.size() == 1u);
+      BOOST_TEST(num_edges(e.control) >= x.min_bones);
+      BOOST_TEST(num_edges(e.control) <= x.max_bones);
       BOOST_TEST(joints_of_kind(e.control, gs::Joint_kind::end) >= x.min_ends);
-      BOOST_TEST(e.control.cut_bones.size() == x.cut_bones);
+      BOOST_TEST(e.control[boost::graph_bundle].cut_bones.size() == x.cut_bones);
       BOOST_TEST(fraction_of_joints_inside(mesh, e.control) == 1.0);
     }
   }
@@ -127,14 +129,14 @@ BOOST_AUTO_TEST_CASE(handles_are_kept_and_cut_once_each)
   const Mesh torus = test::mesh_of<Mesh>(test::torus(3, 1, 64, 24));
   const Extracted t = extract(torus);
   BOOST_TEST(t.report.pruned.cycles == 1u);
-  BOOST_TEST(t.control.cut_bones.size() == 1u);
-  BOOST_TEST(t.control.roots.size() == 1u);
+  BOOST_TEST(t.control[boost::graph_bundle].cut_bones.size() == 1u);
+  BOOST_TEST(t.control[boost::graph_bundle].roots.size() == 1u);
   for(const char* name : {"eight.off", "double-torus-example.off"})
   {
     const Extracted e = extract(test::demo_mesh<Mesh>(name));
     BOOST_TEST(e.report.thinned.cycles == 2u, name);
     BOOST_TEST(e.report.pruned.cycles == 2u, name);
-    BOOST_TEST(e.control.cut_bones.size() == 2u, name);
+    BOOST_TEST(e.control[boost::graph_bundle].cut_bones.size() == 2u, name);
   }
 }
 
@@ -149,8 +151,8 @@ BOOST_AUTO_TEST_CASE(parts_that_nearly_touch_leave_no_loop)
     BOOST_TEST(e.report.thinned.cycles > 0u, name);
     BOOST_TEST(e.report.spurious_cycles_cut == e.report.thinned.cycles, name);
     BOOST_TEST(e.report.pruned.cycles == 0u, name);
-    BOOST_TEST(e.control.cut_bones.empty(), name);
-    BOOST_TEST(e.control.roots.size() == 1u, name);
+    BOOST_TEST(e.control[boost::graph_bundle].cut_bones.empty(), name);
+    BOOST_TEST(e.control[boost::graph_bundle].roots.size() == 1u, name);
   }
 }
 
@@ -167,8 +169,8 @@ BOOST_AUTO_TEST_CASE(peeling_the_surface_voxels_removes_the_false_loops_of_parts
     const gs::Control_skeleton_report r = gs::extract_control_skeleton(
         test::demo_mesh<Mesh>(x.mesh), c, gs::parameters::keep_surface_voxels(false));
     BOOST_TEST(r.pruned.cycles == x.cycles, x.mesh);
-    BOOST_TEST(c.cut_bones.size() == x.cycles, x.mesh);
-    BOOST_TEST(c.roots.size() == 1u, x.mesh);
+    BOOST_TEST(c[boost::graph_bundle].cut_bones.size() == x.cycles, x.mesh);
+    BOOST_TEST(c[boost::graph_bundle].roots.size() == 1u, x.mesh);
   }
 }
 
@@ -179,7 +181,7 @@ BOOST_AUTO_TEST_CASE(two_separate_bodies_give_two_trees)
   Mesh two;
   test::soup_to_mesh(soup, two);
   const Extracted e = extract(two);
-  BOOST_TEST(e.control.roots.size() == 2u);
+  BOOST_TEST(e.control[boost::graph_bundle].roots.size() == 2u);
   BOOST_TEST(e.report.pruned.components == 2u);
 }
 
@@ -196,15 +198,15 @@ BOOST_AUTO_TEST_CASE(a_moved_mesh_gives_the_moved_control_skeleton)
   for(auto v : vertices(moved))
     moved.point(v) = move(moved.point(v));
   const Extracted before = extract(cow), after = extract(moved);
-  BOOST_TEST(after.control.bones.size() == before.control.bones.size());
-  BOOST_REQUIRE(after.control.joints.size() == before.control.joints.size());
+  BOOST_TEST(num_edges(after.control) == num_edges(before.control));
+  BOOST_REQUIRE(num_vertices(after.control) == num_vertices(before.control));
   // Each moved joint is within a voxel of a joint of the moved original.
   double worst = 0;
-  for(const auto& j : before.control.joints)
+  for(const auto& j : test::joints(before.control))
   {
     const Point target = move(j.point);
     double nearest = 1e300;
-    for(const auto& k : after.control.joints)
+    for(const auto& k : test::joints(after.control))
       nearest = std::min(nearest, std::sqrt(CGAL::squared_distance(target, k.point)));
     worst = std::max(worst, nearest);
   }
@@ -216,8 +218,8 @@ BOOST_AUTO_TEST_CASE(a_polyhedron_gives_the_same_skeleton_as_a_surface_mesh)
   CGAL::Polyhedron_3<Kernel> cow_polyhedron;
   test::read_demo_mesh("cow.off", cow_polyhedron);
   const Extracted p = extract(cow_polyhedron), s = extract(test::demo_mesh<Mesh>("cow.off"));
-  BOOST_TEST(p.control.joints.size() == s.control.joints.size());
-  BOOST_TEST(p.control.bones.size() == s.control.bones.size());
+  BOOST_TEST(num_vertices(p.control) == num_vertices(s.control));
+  BOOST_TEST(num_edges(p.control) == num_edges(s.control));
 }
 
 BOOST_AUTO_TEST_CASE(the_report_and_the_visitor_see_every_stage)
@@ -291,9 +293,9 @@ BOOST_AUTO_TEST_CASE(a_null_output_pointer_asks_for_nothing)
   BOOST_TEST(!timed_reeb_graph(not_asked));
   BOOST_TEST(not_asked.reeb_nodes == 0u);
   BOOST_TEST(not_asked.thinned.points == asked.thinned.points);
-  BOOST_TEST(without_outputs.joints.size() == with_outputs.joints.size());
-  for(std::size_t j = 0; j < with_outputs.joints.size(); ++j)
-    BOOST_TEST(without_outputs.joints[j].point == with_outputs.joints[j].point);
+  BOOST_TEST(num_vertices(without_outputs) == num_vertices(with_outputs));
+  for(std::size_t j = 0; j < num_vertices(with_outputs); ++j)
+    BOOST_TEST(without_outputs[j].point == with_outputs[j].point);
 }
 
 BOOST_AUTO_TEST_CASE(the_public_stages_composed_by_hand_give_the_same_skeleton)
@@ -339,15 +341,15 @@ BOOST_AUTO_TEST_CASE(the_public_stages_composed_by_hand_give_the_same_skeleton)
       BOOST_REQUIRE(num_vertices(curve) == num_vertices(expected_curve));
       for(std::size_t v = 0; v < num_vertices(curve); ++v)
         BOOST_TEST((curve[v].point == expected_curve[v].point), "curve point " << v);
-      BOOST_REQUIRE(composed.joints.size() == expected.joints.size());
-      for(std::size_t j = 0; j < composed.joints.size(); ++j)
+      BOOST_REQUIRE(num_vertices(composed) == num_vertices(expected));
+      for(std::size_t j = 0; j < num_vertices(composed); ++j)
       {
-        BOOST_TEST((composed.joints[j].point == expected.joints[j].point), "joint " << j);
-        BOOST_TEST(composed.joints[j].radius == expected.joints[j].radius, "joint " << j);
-        BOOST_TEST(composed.joints[j].parent == expected.joints[j].parent, "joint " << j);
+        BOOST_TEST((composed[j].point == expected[j].point), "joint " << j);
+        BOOST_TEST(composed[j].radius == expected[j].radius, "joint " << j);
+        BOOST_TEST(gs::parent_joint(j, composed) == gs::parent_joint(j, expected), "joint " << j);
       }
-      BOOST_TEST(composed.bones.size() == expected.bones.size());
-      BOOST_TEST(composed.cut_bones.size() == expected.cut_bones.size());
+      BOOST_TEST(num_edges(composed) == num_edges(expected));
+      BOOST_TEST(composed[boost::graph_bundle].cut_bones.size() == expected[boost::graph_bundle].cut_bones.size());
     }
   }
   BOOST_TEST(cycles_cut > 0u); // the composition includes a cut

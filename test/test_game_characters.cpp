@@ -10,6 +10,7 @@
 #include <CGAL/Geodesic_skeleton/thin.h>
 #include <CGAL/Geodesic_skeleton/voxelize.h>
 
+#include <Geodesic_skeleton_test/joints.h>
 #include <Geodesic_skeleton_test/shapes.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -127,7 +128,7 @@ double distance_to_character(const Point& p, const std::vector<Piece>& pieces)
 // Whether some end joint lies within `tolerance` of `tip`.
 bool an_end_reaches(const Control& c, const Vec& tip, double tolerance)
 {
-  for(const auto& j : c.joints)
+  for(const auto& j : test::joints(c))
     if(j.kind == gs::Joint_kind::end && distance_to_segment(vec(j.point), Piece{tip, tip, 0}) <= tolerance)
       return true;
   return false;
@@ -156,17 +157,17 @@ BOOST_AUTO_TEST_CASE(a_character_gets_one_connected_skeleton)
   const gs::Control_skeleton_report report =
       gs::extract_control_skeleton(mesh, control, params::curve_skeleton_output(&curve));
   BOOST_TEST_MESSAGE("biped: " << report.small_pieces.pieces << " pieces, " << report.small_pieces.removed_pieces
-                               << " removed, " << control.joints.size() << " joints, " << control.bones.size()
+                               << " removed, " << num_vertices(control) << " joints, " << num_edges(control)
                                << " bones");
   BOOST_TEST(report.small_pieces.pieces == 2u); // the body and the bobble
   BOOST_TEST(report.small_pieces.removed_pieces == 1u);
-  BOOST_TEST(control.roots.size() == 1u);
-  BOOST_TEST(control.cut_bones.empty());
-  BOOST_TEST(control.bones.size() >= 6u);
-  BOOST_TEST(control.bones.size() <= 35u);
+  BOOST_TEST(control[boost::graph_bundle].roots.size() == 1u);
+  BOOST_TEST(control[boost::graph_bundle].cut_bones.empty());
+  BOOST_TEST(num_edges(control) >= 6u);
+  BOOST_TEST(num_edges(control) <= 35u);
 
   // Every joint inside the body (within a voxel: the solid holds the surface voxels).
-  for(const auto& j : control.joints)
+  for(const auto& j : test::joints(control))
   {
     BOOST_TEST(std::isfinite(j.point.x() + j.point.y() + j.point.z()));
     BOOST_TEST(distance_to_character(j.point, pieces) <= report.voxel_size);
@@ -190,7 +191,7 @@ BOOST_AUTO_TEST_CASE(small_pieces_can_be_kept_as_their_own_trees)
   const gs::Control_skeleton_report report =
       gs::extract_control_skeleton(mesh, control, params::small_piece_fraction(0.));
   BOOST_TEST(report.small_pieces.removed_pieces == 0u);
-  BOOST_TEST(control.roots.size() == 2u);
+  BOOST_TEST(control[boost::graph_bundle].roots.size() == 2u);
 }
 
 BOOST_AUTO_TEST_CASE(two_characters_keep_two_skeletons)
@@ -206,7 +207,7 @@ BOOST_AUTO_TEST_CASE(two_characters_keep_two_skeletons)
   const gs::Control_skeleton_report report = gs::extract_control_skeleton(both, control);
   BOOST_TEST(report.small_pieces.pieces == 2u);
   BOOST_TEST(report.small_pieces.removed_pieces == 0u);
-  BOOST_TEST(control.roots.size() == 2u);
+  BOOST_TEST(control[boost::graph_bundle].roots.size() == 2u);
 }
 
 BOOST_AUTO_TEST_CASE(remove_small_pieces_removes_exactly_the_small_ones)

@@ -258,11 +258,10 @@ BOOST_AUTO_TEST_CASE(a_glb_file_reads_back_with_its_counts_weights_and_bind_matr
   check_skinned_model(m, cow.mesh);
   // One node per bone, per root and per leaf joint, then the mesh's.
   std::size_t leaves = 0;
-  for(std::size_t j = 0; j < cow.skeleton.joints.size(); ++j)
-    leaves += std::none_of(cow.skeleton.joints.begin(), cow.skeleton.joints.end(),
-                           [&](const auto& joint) { return joint.parent == int(j); });
-  BOOST_CHECK_EQUAL(m.skins[0].joints.size(), cow.skeleton.bones.size() + cow.skeleton.roots.size() + leaves);
-  BOOST_CHECK_EQUAL(m.nodes.at(std::size_t(m.skins[0].skeleton)).name, "root_" + std::to_string(cow.skeleton.roots[0]));
+  for(std::size_t j = 0; j < num_vertices(cow.skeleton); ++j)
+    leaves += out_degree(j, cow.skeleton) == 0;
+  BOOST_CHECK_EQUAL(m.skins[0].joints.size(), num_edges(cow.skeleton) + cow.skeleton[boost::graph_bundle].roots.size() + leaves);
+  BOOST_CHECK_EQUAL(m.nodes.at(std::size_t(m.skins[0].skeleton)).name, "root_" + std::to_string(cow.skeleton[boost::graph_bundle].roots[0]));
   std::remove(path.c_str());
 }
 
@@ -327,7 +326,7 @@ BOOST_AUTO_TEST_CASE(several_trees_hang_from_one_skeleton_node)
   shapes::append(soup, shapes::cylinder(1, 20, 24, 46, true), 4, 0, 0);
   const Mesh mesh = shapes::mesh_of<Mesh>(soup);
   Control skeleton = shapes::chain_skeleton({Point(0, 0, 1), Point(0, 0, 10), Point(0, 0, 19)});
-  skeleton = shapes::chain_skeleton({Point(4, 0, 1), Point(4, 0, 19)}, 3, skeleton);
+  skeleton = shapes::chain_skeleton({Point(4, 0, 1), Point(4, 0, 19)}, skeleton);
   const tinygltf::Model m = skinned_round_trip(mesh, skeleton, "two_bars.gltf");
   const tinygltf::Node& top = m.nodes.at(std::size_t(m.skins[0].skeleton));
   BOOST_CHECK_EQUAL(top.name, "skeleton");
@@ -342,18 +341,16 @@ BOOST_AUTO_TEST_CASE(bad_skeletons_and_paths_are_refused)
   const auto map = boost::make_iterator_property_map(weights.begin(), get(CGAL::vertex_index, bar));
   std::ostringstream out;
   BOOST_CHECK_THROW(gs::IO::write_glTF("bar.txt", bar, skeleton, map), std::invalid_argument);
+  // The bar's skeleton is the chain 0 -> 1 -> 2; each bone added below breaks the forest.
   Control cycle = skeleton;
-  cycle.joints[0].parent = 2;
+  add_edge(2, 0, cycle);
   BOOST_CHECK_THROW(gs::IO::write_glTF(out, bar, cycle, map, true), std::invalid_argument);
-  Control missing_parent = skeleton;
-  missing_parent.joints[2].parent = 9;
-  BOOST_CHECK_THROW(gs::IO::write_glTF(out, bar, missing_parent, map, true), std::invalid_argument);
-  Control wrong_bone = skeleton;
-  wrong_bone.bones[1].parent = 0;
-  BOOST_CHECK_THROW(gs::IO::write_glTF(out, bar, wrong_bone, map, true), std::invalid_argument);
-  Control one_bone = skeleton;
-  one_bone.bones.pop_back(); // joint 2 has a parent and no bone
-  BOOST_CHECK_THROW(gs::IO::write_glTF(out, bar, one_bone, map, true), std::invalid_argument);
+  Control two_parents = skeleton;
+  add_edge(0, 2, two_parents);
+  BOOST_CHECK_THROW(gs::IO::write_glTF(out, bar, two_parents, map, true), std::invalid_argument);
+  Control loop = skeleton;
+  add_edge(0, 0, loop);
+  BOOST_CHECK_THROW(gs::IO::write_glTF(out, bar, loop, map, true), std::invalid_argument);
   BOOST_CHECK_THROW(gs::IO::write_glTF("/no/such/folder/bar.glb", bar, skeleton, map), std::runtime_error);
 }
 

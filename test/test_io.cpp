@@ -9,6 +9,8 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <Geodesic_skeleton_test/joints.h>
+
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
@@ -18,6 +20,7 @@
 #include <vector>
 
 namespace gs = CGAL::Geodesic_skeleton;
+namespace test = Geodesic_skeleton_test;
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
@@ -144,41 +147,40 @@ BOOST_AUTO_TEST_SUITE(io)
 BOOST_AUTO_TEST_CASE(a_bvh_read_back_has_the_same_hierarchy_and_offsets)
 {
   const Control c = sample_control_skeleton();
-  BOOST_REQUIRE(c.joints.size() >= 5u);
-  BOOST_REQUIRE_EQUAL(c.cut_bones.size(), 1u);
+  BOOST_REQUIRE(num_vertices(c) >= 5u);
+  BOOST_REQUIRE_EQUAL(c[boost::graph_bundle].cut_bones.size(), 1u);
   std::stringstream file;
   gs::IO::write_BVH(file, c);
   const Bvh_file bvh(file);
 
   // Written depth first from the root: map BVH joints back by name (<kind>_<index>).
-  BOOST_REQUIRE_EQUAL(bvh.joints.size(), c.joints.size());
+  BOOST_REQUIRE_EQUAL(bvh.joints.size(), num_vertices(c));
   std::vector<int> index_of(bvh.joints.size());
   for(std::size_t b = 0; b < bvh.joints.size(); ++b)
   {
     const std::string& name = bvh.joints[b].name;
     index_of[b] = std::stoi(name.substr(name.rfind('_') + 1));
-    BOOST_TEST(name.substr(0, name.rfind('_')) == gs::to_string(c.joints[std::size_t(index_of[b])].kind));
+    BOOST_TEST(name.substr(0, name.rfind('_')) == gs::to_string(c[std::size_t(index_of[b])].kind));
   }
   for(std::size_t b = 0; b < bvh.joints.size(); ++b)
   {
-    const auto& joint = c.joints[std::size_t(index_of[b])];
+    const auto& joint = c[std::size_t(index_of[b])];
+    const long parent = test::parent_index(c, std::size_t(index_of[b]));
     const Bvh_joint& read = bvh.joints[b];
-    BOOST_TEST((read.parent < 0 ? joint.parent == -1 : joint.parent == index_of[std::size_t(read.parent)]));
-    const Point origin = joint.parent < 0 ? Point(0, 0, 0) : c.joints[std::size_t(joint.parent)].point;
+    BOOST_TEST((read.parent < 0 ? parent == -1 : parent == index_of[std::size_t(read.parent)]));
+    const Point origin = parent < 0 ? Point(0, 0, 0) : c[std::size_t(parent)].point;
     BOOST_TEST(read.offset[0] == joint.point.x() - origin.x(), boost::test_tools::tolerance(1e-6));
     BOOST_TEST(read.offset[1] == joint.point.y() - origin.y(), boost::test_tools::tolerance(1e-6));
     BOOST_TEST(read.offset[2] == joint.point.z() - origin.z(), boost::test_tools::tolerance(1e-6));
-    BOOST_TEST(read.channels == (joint.parent < 0 ? 6 : 3));
+    BOOST_TEST(read.channels == (parent < 0 ? 6 : 3));
     // Leaves end with an End Site: the limb tips, and a joint where a cycle was cut.
-    const bool leaf = std::none_of(c.joints.begin(), c.joints.end(), [&](const auto& other) {
-      return other.parent == index_of[b];
-    });
+    const bool leaf = out_degree(std::size_t(index_of[b]), c) == 0;
     BOOST_TEST(read.has_end_site == leaf);
     if(joint.kind == gs::Joint_kind::end)
       BOOST_TEST(leaf);
   }
   BOOST_TEST(bvh.frames == 1);
-  BOOST_TEST(bvh.frame_values == 6 + 3 * (c.joints.size() - 1));
+  BOOST_TEST(bvh.frame_values == 6 + 3 * (num_vertices(c) - 1));
 }
 
 BOOST_AUTO_TEST_CASE(obj_has_a_vertex_per_joint_and_a_line_per_bone)
@@ -193,8 +195,8 @@ BOOST_AUTO_TEST_CASE(obj_has_a_vertex_per_joint_and_a_line_per_bone)
     v += line.rfind("v ", 0) == 0;
     l += line.rfind("l ", 0) == 0;
   }
-  BOOST_TEST(v == c.joints.size());
-  BOOST_TEST(l == c.bones.size() + c.cut_bones.size());
+  BOOST_TEST(v == num_vertices(c));
+  BOOST_TEST(l == num_edges(c) + c[boost::graph_bundle].cut_bones.size());
 }
 
 BOOST_AUTO_TEST_CASE(polylines_hold_every_bone_point)
@@ -209,7 +211,9 @@ BOOST_AUTO_TEST_CASE(polylines_hold_every_bone_point)
     std::istringstream in(line);
     std::size_t n;
     in >> n;
-    const auto& bone = polylines < c.bones.size() ? c.bones[polylines] : c.cut_bones[polylines - c.bones.size()];
+    const gs::Control_bone<Point>& bone = polylines < num_edges(c)
+                                              ? c[gs::numbered_bones(c)[polylines]]
+                                              : c[boost::graph_bundle].cut_bones[polylines - num_edges(c)];
     BOOST_TEST(n == bone.points.size());
     double x, y, z;
     std::size_t read = 0;
@@ -218,24 +222,24 @@ BOOST_AUTO_TEST_CASE(polylines_hold_every_bone_point)
     BOOST_TEST(read == n);
     ++polylines;
   }
-  BOOST_TEST(polylines == c.bones.size() + c.cut_bones.size());
+  BOOST_TEST(polylines == num_edges(c) + c[boost::graph_bundle].cut_bones.size());
 }
 
 BOOST_AUTO_TEST_CASE(json_lists_joints_with_parents_and_kinds)
 {
   const Control c = sample_control_skeleton();
   const nlohmann::json j = nlohmann::json::parse(gs::IO::control_skeleton_to_json(c).dump());
-  BOOST_REQUIRE_EQUAL(j.at("joints").size(), c.joints.size());
-  for(std::size_t i = 0; i < c.joints.size(); ++i)
+  BOOST_REQUIRE_EQUAL(j.at("joints").size(), num_vertices(c));
+  for(std::size_t i = 0; i < num_vertices(c); ++i)
   {
-    BOOST_TEST(j["joints"][i]["parent"].get<int>() == c.joints[i].parent);
-    BOOST_TEST(j["joints"][i]["kind"].get<std::string>() == gs::to_string(c.joints[i].kind));
-    BOOST_TEST(j["joints"][i]["position"][2].get<double>() == c.joints[i].point.z());
+    BOOST_TEST(j["joints"][i]["parent"].get<long>() == test::parent_index(c, i));
+    BOOST_TEST(j["joints"][i]["kind"].get<std::string>() == gs::to_string(c[i].kind));
+    BOOST_TEST(j["joints"][i]["position"][2].get<double>() == c[i].point.z());
   }
-  BOOST_TEST(j.at("bones").size() == c.bones.size());
+  BOOST_TEST(j.at("bones").size() == num_edges(c));
   BOOST_TEST(j.at("cut_bones").size() == 1u);
   for(const auto& bone : j["bones"])
-    BOOST_TEST(c.joints[bone[1].get<std::size_t>()].parent == bone[0].get<int>());
+    BOOST_TEST(test::parent_index(c, bone[1].get<std::size_t>()) == bone[0].get<long>());
 }
 
 BOOST_AUTO_TEST_CASE(an_empty_skeleton_cannot_be_written_as_bvh)

@@ -9,6 +9,7 @@
 #include <CGAL/Geodesic_skeleton/integral_geodesic_mapping_function.h>
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 
+#include <Geodesic_skeleton_test/joints.h>
 #include <Geodesic_skeleton_test/shapes.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -89,16 +90,16 @@ Result skeleton_of(const Mesh& mesh, int resolution = 32)
 // finite, and every joint (and every point of every bone) inside the solid.
 void check_valid(const Result& r, const std::function<bool(const Point&)>& inside)
 {
-  BOOST_TEST_REQUIRE(!r.control.joints.empty());
-  BOOST_TEST(r.control.bones.size() + r.control.roots.size() == r.control.joints.size());
-  for(const auto& j : r.control.joints)
+  BOOST_TEST_REQUIRE(num_vertices(r.control) > 0u);
+  BOOST_TEST(num_edges(r.control) + r.control[boost::graph_bundle].roots.size() == num_vertices(r.control));
+  for(const auto& j : test::joints(r.control))
   {
     BOOST_TEST(finite(j.point));
     BOOST_TEST(std::isfinite(j.radius));
     BOOST_TEST(inside(j.point), "joint (" << j.point << ") is outside the solid");
   }
-  for(const auto& b : r.control.bones)
-    for(const Point& p : b.points)
+  for(const auto b : boost::make_iterator_range(edges(r.control)))
+    for(const Point& p : r.control[b].points)
       BOOST_TEST(finite(p));
   BOOST_TEST(num_vertices(r.curve) > 0u);
   for(std::size_t v = 0; v < num_vertices(r.curve); ++v)
@@ -294,7 +295,7 @@ BOOST_AUTO_TEST_CASE(zero_area_faces_are_harmless)
   BOOST_TEST_REQUIRE(CGAL::is_closed(mesh));
   const Result r = skeleton_of(mesh);
   check_valid(r, inside_boxes({bar}, 0));
-  BOOST_TEST(r.control.bones.size() == 1u); // a straight bar is one bone
+  BOOST_TEST(num_edges(r.control) == 1u); // a straight bar is one bone
 }
 
 BOOST_AUTO_TEST_CASE(overlapping_boxes_give_the_skeleton_of_their_union)
@@ -307,7 +308,7 @@ BOOST_AUTO_TEST_CASE(overlapping_boxes_give_the_skeleton_of_their_union)
   const Result r = skeleton_of(test::mesh_of<Mesh>(s), 48);
   check_valid(r, inside_boxes({bar, cross}, 0));
   // A cross: a junction joint, and the four arms reached.
-  BOOST_TEST(r.control.joints.size() >= 5u);
+  BOOST_TEST(num_vertices(r.control) >= 5u);
 }
 
 BOOST_AUTO_TEST_CASE(hundreds_of_small_parts_each_get_a_skeleton)
@@ -324,7 +325,7 @@ BOOST_AUTO_TEST_CASE(hundreds_of_small_parts_each_get_a_skeleton)
   const Mesh mesh = test::mesh_of<Mesh>(s);
   const Result r = skeleton_of(mesh, 64);
   check_valid(r, inside_closed_mesh(mesh));
-  BOOST_TEST(r.control.roots.size() == boxes.size()); // one tree per part, none lost
+  BOOST_TEST(r.control[boost::graph_bundle].roots.size() == boxes.size()); // one tree per part, none lost
 }
 
 BOOST_AUTO_TEST_CASE(huge_and_tiny_coordinates_scale_the_skeleton)
@@ -342,7 +343,7 @@ BOOST_AUTO_TEST_CASE(huge_and_tiny_coordinates_scale_the_skeleton)
   };
   const Result unit = skeleton_of(mesh_at(1));
   check_valid(unit, inside_boxes(l_shape, 0));
-  BOOST_TEST(unit.control.joints.size() >= 3u);
+  BOOST_TEST(num_vertices(unit.control) >= 3u);
   for(double scale : {1e30, 1e-30, 1e100, 1e-100})
   {
     BOOST_TEST_MESSAGE("scale " << scale);
@@ -352,11 +353,11 @@ BOOST_AUTO_TEST_CASE(huge_and_tiny_coordinates_scale_the_skeleton)
       scaled.push_back(Box{b[0] * scale, b[1] * scale, b[2] * scale, b[3] * scale, b[4] * scale, b[5] * scale});
     check_valid(r, inside_boxes(scaled, 0));
     BOOST_TEST(r.report.voxel_size / scale == unit.report.voxel_size, boost::test_tools::tolerance(1e-9));
-    BOOST_TEST_REQUIRE(r.control.joints.size() == unit.control.joints.size());
-    for(std::size_t i = 0; i < r.control.joints.size(); ++i)
+    BOOST_TEST_REQUIRE(num_vertices(r.control) == num_vertices(unit.control));
+    for(std::size_t i = 0; i < num_vertices(r.control); ++i)
     {
-      const Point& p = r.control.joints[i].point;
-      const Point& q = unit.control.joints[i].point;
+      const Point& p = r.control[i].point;
+      const Point& q = unit.control[i].point;
       const double d = std::sqrt(CGAL::square(p.x() / scale - q.x()) + CGAL::square(p.y() / scale - q.y()) +
                                  CGAL::square(p.z() / scale - q.z()));
       BOOST_TEST(d <= unit.report.voxel_size);
@@ -531,14 +532,14 @@ BOOST_AUTO_TEST_CASE(the_ends_of_the_ranges)
   // ball four voxels across gives one inside it too.
   Control c;
   gs::extract_control_skeleton(mesh, c, params::resolution(4));
-  BOOST_TEST(!c.joints.empty());
-  BOOST_TEST(c.joints.size() <= 4u);
-  for(const auto& j : c.joints)
+  BOOST_TEST(!(num_vertices(c) == 0));
+  BOOST_TEST(num_vertices(c) <= 4u);
+  for(const auto& j : test::joints(c))
     BOOST_TEST(inside_boxes({bar}, 1e-9)(j.point));
   const Mesh ball = test::mesh_of<Mesh>(test::icosphere(1, 2));
   gs::extract_control_skeleton(ball, c, params::resolution(4));
-  BOOST_TEST(!c.joints.empty());
-  for(const auto& j : c.joints)
+  BOOST_TEST(!(num_vertices(c) == 0));
+  for(const auto& j : test::joints(c))
     BOOST_TEST(inside_closed_mesh(ball)(j.point));
   // The highest needs a grid far beyond the default memory limit: a clear length_error
   // naming the need, before allocating.

@@ -46,12 +46,12 @@ BOOST_AUTO_TEST_SUITE(skinning_weights)
 BOOST_AUTO_TEST_CASE(weights_are_non_negative_sorted_and_sum_to_one)
 {
   const auto [cow, control] = shapes::demo_mesh_with_skeleton("cow.off");
-  BOOST_REQUIRE_GT(control.bones.size(), 5u);
+  BOOST_REQUIRE_GT(num_edges(control), 5u);
   gs::Skinning_report report;
   const auto weights = weights_of(cow, control, CGAL::parameters::default_values(), &report);
   BOOST_CHECK_GT(report.solid_voxels, 1000u);
   // The bounded searches visit far fewer voxels than one full search per bone.
-  BOOST_CHECK_LT(report.voxel_visits, report.solid_voxels * control.bones.size() / 2);
+  BOOST_CHECK_LT(report.voxel_visits, report.solid_voxels * num_edges(control) / 2);
   for(const gs::Bone_weights& w : weights)
   {
     BOOST_REQUIRE_GE(w.size(), 1u);
@@ -59,7 +59,7 @@ BOOST_AUTO_TEST_CASE(weights_are_non_negative_sorted_and_sum_to_one)
     double sum = 0;
     for(std::size_t i = 0; i < w.size(); ++i)
     {
-      BOOST_REQUIRE_LT(w.bone[i], control.bones.size());
+      BOOST_REQUIRE_LT(w.bone[i], num_edges(control));
       BOOST_REQUIRE_GE(w.weight[i], 0.f);
       if(i > 0)
         BOOST_REQUIRE_GE(w.weight[i - 1], w.weight[i]);
@@ -139,7 +139,7 @@ BOOST_AUTO_TEST_CASE(distances_run_through_the_solid_not_through_the_air)
   shapes::append(soup, shapes::cylinder(1, 20, 24, 46, true), 2.6, 0, 0);
   const Mesh mesh = shapes::mesh_of<Mesh>(soup);
   Control skeleton = chain_skeleton({Point(0, 0, 2), Point(0, 0, 18)});
-  skeleton = chain_skeleton({Point(2.6, 0, 2), Point(2.6, 0, 18)}, 2, skeleton);
+  skeleton = chain_skeleton({Point(2.6, 0, 2), Point(2.6, 0, 18)}, skeleton);
   gs::Skinning_report report;
   const auto weights = weights_of(mesh, skeleton, params::resolution(96), &report);
   BOOST_CHECK_EQUAL(report.vertices_bound_in_straight_line, 0u);
@@ -175,11 +175,12 @@ BOOST_AUTO_TEST_CASE(bad_parameters_and_skeletons_are_refused)
   BOOST_CHECK_THROW(weights_of(mesh, skeleton, params::falloff(0.)), std::invalid_argument);
   BOOST_CHECK_THROW(weights_of(mesh, skeleton, params::influence_ratio(1.)), std::invalid_argument);
   Control no_bones = skeleton;
-  no_bones.bones.clear();
+  while(num_edges(no_bones) > 0)
+    remove_edge(*edges(no_bones).first, no_bones);
   BOOST_CHECK_THROW(weights_of(mesh, no_bones, CGAL::parameters::default_values()), std::invalid_argument);
-  Control bad_joint = skeleton;
-  bad_joint.bones[1].child = 7;
-  BOOST_CHECK_THROW(weights_of(mesh, bad_joint, CGAL::parameters::default_values()), std::invalid_argument);
+  Control bad_point = skeleton;
+  bad_point[gs::numbered_bones(bad_point)[1]].points = {Point(0, 0, 10), Point(0, 0, std::nan(""))};
+  BOOST_CHECK_THROW(weights_of(mesh, bad_point, CGAL::parameters::default_values()), std::invalid_argument);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -17,7 +17,7 @@ namespace Geodesic_skeleton {
 
 /// \ingroup PkgGeodesicSkeletonRef
 /// The skinning weights of one mesh vertex: at most `capacity` (8) pairs of a bone (an
-/// index into `Control_skeleton::bones`) and its weight, by decreasing weight. The value
+/// number, see `numbered_bones()`) and its weight, by decreasing weight. The value
 /// type of the `weight_output` property map of `compute_skinning_weights()`: a fixed-size
 /// object (no allocation per vertex, 68 bytes). Weights are `float`, the precision of glTF.
 struct Bone_weights

@@ -53,9 +53,11 @@ namespace internal {
 // The polyline of a bone, in grid coordinates: its points, or the segment from its parent
 // joint to its child joint when it has fewer than two.
 template <typename Point>
-std::vector<Vec3> bone_polyline_in_grid(const Control_skeleton<Point>& skeleton, const Control_bone<Point>& bone,
+std::vector<Vec3> bone_polyline_in_grid(const Control_skeleton<Point>& skeleton,
+                                        typename boost::graph_traits<Control_skeleton<Point>>::edge_descriptor e,
                                         const Voxel_frame& frame)
 {
+  const Control_bone<Point>& bone = skeleton[e];
   auto grid = [&](const Point& p) {
     return frame.to_grid(Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
   };
@@ -64,7 +66,7 @@ std::vector<Vec3> bone_polyline_in_grid(const Control_skeleton<Point>& skeleton,
     for(const Point& p : bone.points)
       polyline.push_back(grid(p));
   else
-    polyline = {grid(skeleton.joints[bone.parent].point), grid(skeleton.joints[bone.child].point)};
+    polyline = {grid(skeleton[source(e, skeleton)].point), grid(skeleton[target(e, skeleton)].point)};
   for(const Vec3& g : polyline)
     if(!std::isfinite(g[0]) || !std::isfinite(g[1]) || !std::isfinite(g[2]))
       throw std::invalid_argument("compute_skinning_weights: a bone has a non-finite point");
@@ -74,14 +76,10 @@ std::vector<Vec3> bone_polyline_in_grid(const Control_skeleton<Point>& skeleton,
 template <typename Point>
 void check_bones(const Control_skeleton<Point>& skeleton, const char* caller)
 {
-  if(skeleton.bones.empty())
+  if(num_edges(skeleton) == 0)
     throw std::invalid_argument(std::string(caller) + ": the control skeleton has no bone");
-  if(skeleton.bones.size() > std::size_t(std::numeric_limits<std::uint32_t>::max()))
+  if(num_edges(skeleton) > std::size_t(std::numeric_limits<std::uint32_t>::max()))
     throw std::invalid_argument(std::string(caller) + ": too many bones");
-  for(std::size_t b = 0; b < skeleton.bones.size(); ++b)
-    if(skeleton.bones[b].parent >= skeleton.joints.size() || skeleton.bones[b].child >= skeleton.joints.size())
-      throw std::invalid_argument(std::string(caller) + ": bone " + std::to_string(b) +
-                                  " refers to a joint that does not exist");
 }
 
 // Keeps the `k` largest weights of a vertex.
@@ -140,8 +138,8 @@ inline void normalise(Bone_weights& weights)
 /// \ref manual_skinning_method.
 ///
 /// The skeleton may be any: from `extract_control_skeleton()` or `split_into_bones()`, or
-/// filled by hand (joints with their points and parents, bones with `parent` and `child`;
-/// `points` may be empty). Its joints may be in any order; `cut_bones` are ignored.
+/// filled by hand (joints with their points, bones as edges from parent to child; `points`
+/// may be empty). Its joints may be in any order; the cut bones are ignored.
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` (`Surface_mesh`, `Polyhedron_3`, ...), as
 ///         for `voxelize()`.
@@ -149,7 +147,7 @@ inline void normalise(Bone_weights& weights)
 /// \tparam WeightMap a model of `WritablePropertyMap` with the mesh's vertex descriptor as
 ///         key type and `Bone_weights` as value type (e.g. a `Surface_mesh` property map, or
 ///         `boost::make_iterator_property_map()` over a `std::vector<Bone_weights>` and the
-///         vertex index map). A bone is an index into `skeleton.bones`.
+///         vertex index map). A bone is a bone number (see `numbered_bones()`).
 /// \param mesh the mesh.
 /// \param skeleton the control skeleton, in the mesh's coordinates.
 /// \param weight_output receives the weights of every vertex, by decreasing weight.
@@ -202,8 +200,7 @@ inline void normalise(Bone_weights& weights)
 ///
 /// \returns what was done: the voxels, the work of the searches, the vertices bound in
 ///          straight line, the time.
-/// \pre the skeleton has at least one bone, every bone refers to existing joints, every
-///      point is finite; the mesh satisfies `voxelize()`'s preconditions.
+/// \pre the skeleton has at least one bone, every point is finite; the mesh satisfies `voxelize()`'s preconditions.
 /// \throws std::invalid_argument when a precondition does not hold or a parameter is out of
 ///         range (the message names it); what `voxelize()` throws.
 /// \throws std::length_error when the fields would need more memory than `memory_limit`.
@@ -272,13 +269,14 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   const internal::Vertex_cells cells(solid, std::move(grid_points));
 
   // The bones in the grid, and the distance to the nearest one.
-  const std::size_t bones = skeleton.bones.size();
+  const auto numbered = numbered_bones(skeleton);
+  const std::size_t bones = numbered.size();
   std::vector<std::vector<internal::Vec3>> polylines(bones);
   std::vector<std::vector<std::uint32_t>> seeds(bones);
   std::vector<std::uint32_t> all_seeds;
   for(std::size_t b = 0; b < bones; ++b)
   {
-    polylines[b] = internal::bone_polyline_in_grid(skeleton, skeleton.bones[b], frame);
+    polylines[b] = internal::bone_polyline_in_grid(skeleton, numbered[b], frame);
     seeds[b] = internal::rasterize_polyline(solid, polylines[b]);
     all_seeds.insert(all_seeds.end(), seeds[b].begin(), seeds[b].end());
   }

@@ -283,7 +283,7 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), default_visitor);
   Control_skeleton_report report;
   internal::Stage_clock<decltype(visitor)> clock(visitor, report);
-  out.clear();
+  out = Control_skeleton<Point>();
   internal::check_control_skeleton_parameters(np, "extract_control_skeleton");
 
   // Each stage is a public function; the mesh as voxelize() rasterised it is shared with

@@ -91,8 +91,7 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
       joint.radius = radius(v);
       joint.kind = kind;
       joint.skeleton_vertex = v;
-      joint_of[v] = static_cast<long>(graph.joints.size());
-      graph.joints.push_back(joint);
+      joint_of[v] = static_cast<long>(add_vertex(joint, graph));
     }
     return static_cast<std::size_t>(joint_of[v]);
   };
@@ -128,15 +127,15 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
     for(std::size_t c = 0; c + 1 < cuts.size(); ++c)
     {
       Control_bone<Point> bone;
-      bone.parent = add_joint(b[cuts[c]], Joint_kind::bend);
-      bone.child = add_joint(b[cuts[c + 1]], Joint_kind::bend);
+      const std::size_t first = add_joint(b[cuts[c]], Joint_kind::bend);
+      const std::size_t last = add_joint(b[cuts[c + 1]], Joint_kind::bend);
       for(std::size_t k = cuts[c]; k <= cuts[c + 1]; ++k)
       {
         bone.points.emplace_back(points[k][0], points[k][1], points[k][2]);
         if(k > cuts[c])
           bone.length += norm3(sub(points[k], points[k - 1]));
       }
-      graph.bones.push_back(std::move(bone));
+      add_bone(first, last, std::move(bone), graph);
     }
   }
   control = root_joint_graph(graph);
@@ -153,7 +152,9 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 /// (`chord_to_point_distance_accumulation()`) peaks at `bend_threshold` or more, or where
 /// it strays from its chord by more than `straightness_tolerance` MAT radii, never leaving
 /// a bone shorter than `minimum_bone_length_factor` MAT radii; each component is rooted at
-/// its most central junction. The steps are described in the manual, section
+/// its most central junction; when the shape has handles, the bones left off the trees (one
+/// per independent cycle) are in the graph bundle's `Control_skeleton_property::cut_bones`.
+/// The steps are described in the manual, section
 /// \ref manual_split_into_bones.
 ///
 /// The points and radii are read through property maps, so the skeleton of
@@ -171,8 +172,9 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 ///         units) unless a `mat_radius_map` is given.
 /// \tparam Point the point type of the output.
 /// \param skeleton the curve skeleton.
-/// \param control receives the control skeleton (cleared first); empty for an empty
-///        skeleton. `Control_joint::skeleton_vertex` is the vertex descriptor (index) of
+/// \param control receives the control skeleton (cleared first), a forest whose vertices
+///        are numbered parents first and whose edges are added in the order of their child
+///        joints; empty for an empty skeleton. `Control_joint::skeleton_vertex` is the vertex descriptor (index) of
 ///        the joint's vertex in `skeleton`.
 /// \param np an optional sequence of \ref manual_named_parameters "named parameters"
 ///        among the ones listed below:
@@ -237,7 +239,7 @@ void split_into_bones(const CurveSkeleton& skeleton, Control_skeleton<Point>& co
                 "skeleton of CGAL::Mean_curvature_flow_skeletonization): give its MAT radii with "
                 "the named parameter mat_radius_map");
   const internal::Bone_splitting_settings settings = internal::bone_splitting_settings(np);
-  control.clear();
+  control = Control_skeleton<Point>();
   if constexpr(internal::has_radius_map<CurveSkeleton, NamedParameters>())
     internal::split_into_bones_with_maps(skeleton, internal::skeleton_point_map(skeleton, np),
                                          internal::skeleton_radius_map(skeleton, np), settings, control);

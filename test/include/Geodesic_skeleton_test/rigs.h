@@ -25,26 +25,19 @@ using Rig_point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
 using Rig_mesh = CGAL::Surface_mesh<Rig_point>;
 using Rig_skeleton = gs::Control_skeleton<Rig_point>;
 // A skeleton given by hand: a chain of joints along `points`, one bone between each two,
-// bones without points (the segment from parent to child is used).
-inline Rig_skeleton chain_skeleton(const std::vector<Rig_point>& points, std::size_t first_joint = 0,
-                                   Rig_skeleton skeleton = Rig_skeleton())
+// bones without points (the segment from parent to child is used), added to `skeleton`.
+inline Rig_skeleton chain_skeleton(const std::vector<Rig_point>& points, Rig_skeleton skeleton = Rig_skeleton())
 {
   for(std::size_t i = 0; i < points.size(); ++i)
   {
     gs::Control_joint<Rig_point> joint;
     joint.point = points[i];
-    joint.parent = i == 0 ? -1 : int(first_joint + i - 1);
     joint.kind = i == 0 ? gs::Joint_kind::root : i + 1 == points.size() ? gs::Joint_kind::end : gs::Joint_kind::bend;
-    skeleton.joints.push_back(joint);
+    const std::size_t j = add_vertex(joint, skeleton);
     if(i == 0)
-      skeleton.roots.push_back(first_joint);
+      skeleton[boost::graph_bundle].roots.push_back(j);
     else
-    {
-      gs::Control_bone<Rig_point> bone;
-      bone.parent = first_joint + i - 1;
-      bone.child = first_joint + i;
-      skeleton.bones.push_back(bone);
-    }
+      add_edge(j - 1, j, skeleton);
   }
   return skeleton;
 }

@@ -8,6 +8,7 @@
 /// Writes a control skeleton as a BVH (Biovision hierarchy) file with a one-frame rest pose.
 
 #include <CGAL/Geodesic_skeleton/Control_skeleton.h>
+#include <CGAL/Geodesic_skeleton/internal/split_into_bones/joint_tree.h>
 #include <CGAL/Geodesic_skeleton/internal/vec3.h>
 
 #include <CGAL/number_utils.h>
@@ -32,7 +33,7 @@ struct Bvh_writer
 {
   const Control_skeleton<Point>& skeleton;
   std::ostream& os;
-  std::vector<std::vector<std::size_t>> children;
+  Geodesic_skeleton::internal::Joint_tree tree;
   std::size_t written = 0; // joints written so far
 
   static std::string joint_name(std::size_t j, Joint_kind kind)
@@ -41,7 +42,7 @@ struct Bvh_writer
   }
   std::array<double, 3> position(std::size_t j) const
   {
-    const Point& p = skeleton.joints[j].point;
+    const Point& p = skeleton[j].point;
     return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
   }
   void indent(int depth) { os << std::string(2 * static_cast<std::size_t>(depth), ' '); }
@@ -55,13 +56,12 @@ struct Bvh_writer
   // limb's flesh, and a non-zero last bone for tools that drop zero-length bones.
   std::array<double, 3> end_site(std::size_t j) const
   {
-    const int parent = skeleton.joints[j].parent;
     std::array<double, 3> d{0, 0, 0};
-    if(parent < 0)
-      return {0, std::max(skeleton.joints[j].radius, 1e-6), 0};
-    const auto p = position(j), q = position(static_cast<std::size_t>(parent));
+    if(tree.incoming[j] < 0)
+      return {0, std::max(skeleton[j].radius, 1e-6), 0};
+    const auto p = position(j), q = position(parent_joint(j, skeleton));
     const double length = Geodesic_skeleton::internal::norm3(Geodesic_skeleton::internal::sub(p, q));
-    const double extent = std::max(skeleton.joints[j].radius, 1e-3 * length);
+    const double extent = std::max(skeleton[j].radius, 1e-3 * length);
     for(int c = 0; c < 3; ++c)
       d[c] = length > 0 ? (p[c] - q[c]) / length * extent : 0.0;
     if(length == 0)
@@ -71,13 +71,13 @@ struct Bvh_writer
 
   void write_joint(std::size_t j, int depth)
   {
-    const Control_joint<Point>& joint = skeleton.joints[j];
+    const bool root = tree.incoming[j] < 0;
     ++written;
     indent(depth);
-    os << (joint.parent < 0 ? "ROOT " : "JOINT ") << joint_name(j, joint.kind) << '\n';
+    os << (root ? "ROOT " : "JOINT ") << joint_name(j, skeleton[j].kind) << '\n';
     indent(depth);
     os << "{\n";
-    if(joint.parent < 0)
+    if(root)
     {
       offset(depth + 1, position(j));
       indent(depth + 1);
@@ -85,14 +85,14 @@ struct Bvh_writer
     }
     else
     {
-      const auto p = position(j), q = position(static_cast<std::size_t>(joint.parent));
+      const auto p = position(j), q = position(parent_joint(j, skeleton));
       offset(depth + 1, {p[0] - q[0], p[1] - q[1], p[2] - q[2]});
       indent(depth + 1);
       os << "CHANNELS 3 Zrotation Xrotation Yrotation\n";
     }
-    for(std::size_t c : children[j])
+    for(std::size_t c : tree.children[j])
       write_joint(c, depth + 1);
-    if(children[j].empty())
+    if(tree.children[j].empty())
     {
       indent(depth + 1);
       os << "End Site\n";
@@ -116,7 +116,7 @@ struct Bvh_writer
 /// armature.
 ///
 /// A BVH file holds one hierarchy: with several trees (a mesh of several parts) only the
-/// tree of `skeleton.roots[tree]` is written. Joints are named `<kind>_<index>` (for
+/// tree of root `skeleton[boost::graph_bundle].roots[tree]` is written. Joints are named `<kind>_<index>` (for
 /// example `root_0`, `junction_3`, `end_7`). The root has 6 channels (position, then
 /// rotation in Z, X, Y order), every other joint 3 (rotation). A leaf joint ends with an
 /// End Site one MAT radius further along its bone. Bones cut to break cycles are not
@@ -124,24 +124,23 @@ struct Bvh_writer
 ///
 /// \param os the output stream (its precision is raised to 9 significant digits).
 /// \param skeleton a control skeleton, from `split_into_bones()`.
-/// \param tree which tree to write, an index into `skeleton.roots` (default 0).
+/// \param tree which tree to write, an index into the roots (default 0).
 /// \returns `os`.
-/// \throws std::invalid_argument when the skeleton is empty or `tree` is out of range.
+/// \throws std::invalid_argument when the skeleton is empty, `tree` is out of range, or the
+///         skeleton is not a forest.
 ///
 /// \b Complexity: O(J) for J joints.
 template <typename Point>
 std::ostream& write_BVH(std::ostream& os, const Control_skeleton<Point>& skeleton, std::size_t tree = 0)
 {
-  if(skeleton.joints.empty() || tree >= skeleton.roots.size())
+  const std::vector<std::size_t>& roots = skeleton[boost::graph_bundle].roots;
+  if(num_vertices(skeleton) == 0 || tree >= roots.size())
     throw std::invalid_argument("write_BVH: the control skeleton has no tree " + std::to_string(tree));
-  internal::Bvh_writer<Point> writer{skeleton, os, std::vector<std::vector<std::size_t>>(skeleton.joints.size())};
-  for(std::size_t j = 0; j < skeleton.joints.size(); ++j)
-    if(skeleton.joints[j].parent >= 0)
-      writer.children[static_cast<std::size_t>(skeleton.joints[j].parent)].push_back(j);
+  internal::Bvh_writer<Point> writer{skeleton, os, Geodesic_skeleton::internal::joint_tree(skeleton, "write_BVH")};
 
   const auto old_precision = os.precision(9);
   os << "HIERARCHY\n";
-  const std::size_t root = skeleton.roots[tree];
+  const std::size_t root = roots[tree];
   writer.write_joint(root, 0);
 
   os << "MOTION\nFrames: 1\nFrame Time: 0.0333333\n";

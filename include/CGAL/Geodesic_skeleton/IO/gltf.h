@@ -100,16 +100,16 @@ tinygltf::Model skinned_glTF_model(const TriangleMesh& mesh, const Control_skele
                                     get_const_property_map(CGAL::vertex_point, mesh));
   const auto vim = CGAL::get_initialized_vertex_index_map(mesh, np);
   const std::size_t n = num_vertices(mesh);
-  const std::size_t joints = skeleton.joints.size();
+  const std::size_t joints = num_vertices(skeleton);
   const Geodesic_skeleton::internal::Joint_tree tree = Geodesic_skeleton::internal::joint_tree(skeleton, caller);
   if(joints == 0)
     throw std::invalid_argument(caller + ": the control skeleton has no joint");
   if(n == 0 || n > std::numeric_limits<std::uint32_t>::max())
     throw std::invalid_argument(caller + ": the mesh must have between 1 and 2^32 - 1 vertices");
-  if(skeleton.bones.size() + 2 * joints > std::numeric_limits<std::uint16_t>::max())
+  if(num_edges(skeleton) + 2 * joints > std::numeric_limits<std::uint16_t>::max())
     throw std::invalid_argument(caller + ": too many bones and joints for 16-bit joint indices");
   // The bone that leads to each joint: one per joint with a parent, from that parent.
-  const std::vector<long> incoming = Geodesic_skeleton::internal::bone_to_each_joint(skeleton, caller);
+  const std::vector<long>& incoming = tree.incoming;
 
   tinygltf::Model model;
   model.asset.version = "2.0";
@@ -191,7 +191,7 @@ tinygltf::Model skinned_glTF_model(const TriangleMesh& mesh, const Control_skele
     double total = 0;
     for(std::size_t k = 0; k < w.size(); ++k)
     {
-      if(w.bone[k] >= skeleton.bones.size())
+      if(w.bone[k] >= num_edges(skeleton))
         throw std::invalid_argument(caller + ": vertex " + std::to_string(i) + " has a weight for bone " +
                                     std::to_string(w.bone[k]) + ", which does not exist");
       if(!(w.weight[k] >= 0) || !std::isfinite(w.weight[k]))
@@ -238,7 +238,7 @@ tinygltf::Model skinned_glTF_model(const TriangleMesh& mesh, const Control_skele
   // joint, then one per leaf joint (the tip of the last bone of a limb, which drives no
   // vertex). Each node is translated from its parent node, without rotation; the bind pose
   // is the rest pose, so a node's inverse bind matrix is the translation by minus its origin.
-  const std::size_t bones = skeleton.bones.size();
+  const std::size_t bones = num_edges(skeleton);
   std::vector<std::size_t> origin_joint(bones), parent_node(bones);
   std::vector<std::size_t> root_node(joints, 0);
   for(std::size_t r : tree.roots)
@@ -247,11 +247,12 @@ tinygltf::Model skinned_glTF_model(const TriangleMesh& mesh, const Control_skele
     origin_joint.push_back(r);
     parent_node.push_back(std::size_t(-1));
   }
-  for(std::size_t b = 0; b < bones; ++b)
+  std::size_t b = 0;
+  for(const auto e : boost::make_iterator_range(edges(skeleton)))
   {
-    const std::size_t head = skeleton.bones[b].parent;
+    const std::size_t head = source(e, skeleton);
     origin_joint[b] = head;
-    parent_node[b] = incoming[head] >= 0 ? std::size_t(incoming[head]) : root_node[head];
+    parent_node[b++] = incoming[head] >= 0 ? std::size_t(incoming[head]) : root_node[head];
   }
   for(std::size_t j = 0; j < joints; ++j)
     if(tree.children[j].empty() && incoming[j] >= 0)
@@ -266,12 +267,12 @@ tinygltf::Model skinned_glTF_model(const TriangleMesh& mesh, const Control_skele
   for(std::size_t k = 0; k < nodes; ++k)
   {
     const std::size_t j = origin_joint[k];
-    const auto p = internal::joint_position(skeleton.joints[j]);
+    const auto p = internal::joint_position(skeleton[j]);
     auto offset = p;
     tinygltf::Node& node = model.nodes[k];
     if(parent_node[k] != std::size_t(-1))
     {
-      const auto q = internal::joint_position(skeleton.joints[origin_joint[parent_node[k]]]);
+      const auto q = internal::joint_position(skeleton[origin_joint[parent_node[k]]]);
       for(std::size_t a = 0; a < 3; ++a)
         offset[a] -= q[a];
       model.nodes[parent_node[k]].children.push_back(int(k));
@@ -354,21 +355,21 @@ std::ostream& write_glTF(std::ostream& os, const TriangleMesh& mesh, const Contr
 /// <b>Bones to glTF joints.</b> glTF weights a vertex by joint nodes, and a node turns what
 /// it drives about its own origin. So the armature has, as Blender's has, one node per bone
 /// at the bone's head: skin joint `b` (node `b`, named `bone_<b>`) is bone `b`, placed at its
-/// parent joint `skeleton.bones[b].parent` and child of the node of the bone that leads to
+/// parent joint (the source of the edge) and child of the node of the bone that leads to
 /// that joint; `JOINTS_0` values are thus the bone indices of the weights. Rotating node `b`
 /// swings bone `b` and everything below it about the joint it starts from, and two bones out
 /// of one junction (two legs from the hip) move independently. Then come one node per root
 /// joint (`root_<j>`, parent of the nodes of the bones out of it; it drives no vertex and
 /// moves its whole tree), and one per leaf joint (`end_<j>`, the tip of a limb, which drives
 /// no vertex but gives importers the last bone's length). The joint that a bone leads to
-/// (`skeleton.bones[b].child`) is where the node of each bone below it stands.
+/// (the target of its edge) is where the node of each bone below it stands.
 /// Weights are scaled to sum 1 per vertex; a bone repeated in a vertex's weights adds up.
 ///
 /// \tparam WeightMap a readable vertex property map of `Bone_weights`.
 /// \param path the file, `.glb` or `.gltf` (any case).
 /// \param mesh the mesh (a model of `FaceListGraph`).
-/// \param skeleton its control skeleton; joints in any order, parents forming trees.
-/// \param weights the weights of every vertex (bone indices into `skeleton.bones`).
+/// \param skeleton its control skeleton; joints in any order, bones forming trees.
+/// \param weights the weights of every vertex (bone numbers, see `numbered_bones()`).
 /// \param np an optional sequence of \ref manual_named_parameters "named parameters"
 ///        among the ones listed below:
 /// \cgalNamedParamsBegin
@@ -387,9 +388,8 @@ std::ostream& write_glTF(std::ostream& os, const TriangleMesh& mesh, const Contr
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \throws std::invalid_argument for another extension, a skeleton without joint or whose
-///         parents do not form trees (a parent that does not exist, a cycle), bones that do
-///         not match the parents (one bone from its parent to each joint that has one), more
-///         than 65535 nodes, a weight for a bone that does not exist, a vertex without
+///         bones do not form trees (two bones to one joint, a bone from a joint to itself,
+///         a cycle), more than 65535 nodes, a weight for a bone that does not exist, a vertex without
 ///         weight, a non-finite coordinate, a mesh without faces.
 /// \throws std::runtime_error "PATH: cannot write the file" when writing fails.
 ///

@@ -30,23 +30,29 @@ nlohmann::json point_to_json(const Point& p)
 /// A control skeleton as JSON:
 /// `{"joints": [{"position": [x, y, z], "radius": r, "parent": p, "kind": "root"}, ...],
 ///   "bones": [[parent, child], ...], "cut_bones": [[a, b], ...], "roots": [i, ...]}`;
-/// joint indices are positions in `joints`, `parent` is -1 for a root.
-/// \b Complexity: O(J) for J joints.
+/// joint indices are vertex indices, bones in the order of `edges(skeleton)`, `parent` is -1
+/// for a root.
+/// \b Complexity: O(J + B) for J joints and B bones.
 template <typename Point>
 nlohmann::json control_skeleton_to_json(const Control_skeleton<Point>& skeleton)
 {
   nlohmann::json joints = nlohmann::json::array(), bones = nlohmann::json::array(),
                  cut = nlohmann::json::array();
-  for(const Control_joint<Point>& j : skeleton.joints)
+  for(const auto v : boost::make_iterator_range(vertices(skeleton)))
+  {
+    const Control_joint<Point>& j = skeleton[v];
+    const auto parent = parent_joint(v, skeleton);
     joints.push_back({{"position", point_to_json(j.point)},
                       {"radius", j.radius},
-                      {"parent", j.parent},
+                      {"parent", parent == boost::graph_traits<Control_skeleton<Point>>::null_vertex() ? -1L : long(parent)},
                       {"kind", to_string(j.kind)}});
-  for(const Control_bone<Point>& b : skeleton.bones)
-    bones.push_back({b.parent, b.child});
-  for(const Control_bone<Point>& b : skeleton.cut_bones)
-    cut.push_back({b.parent, b.child});
-  return {{"joints", joints}, {"bones", bones}, {"cut_bones", cut}, {"roots", skeleton.roots}};
+  }
+  for(const auto e : boost::make_iterator_range(edges(skeleton)))
+    bones.push_back({source(e, skeleton), target(e, skeleton)});
+  const Control_skeleton_property<Point>& forest = skeleton[boost::graph_bundle];
+  for(const Control_cut_bone<Point>& b : forest.cut_bones)
+    cut.push_back({b.source, b.target});
+  return {{"joints", joints}, {"bones", bones}, {"cut_bones", cut}, {"roots", forest.roots}};
 }
 
 /// \ingroup PkgGeodesicSkeletonRef

@@ -19,26 +19,28 @@ namespace IO {
 
 /// \ingroup PkgGeodesicSkeletonRef
 /// Writes `skeleton` as OBJ: one vertex `v x y z` per joint, in the order of
-/// `skeleton.joints`, then one line element `l parent child` per bone (1-based indices),
+/// `vertices(skeleton)`, then one line element `l parent child` per bone (1-based indices),
 /// then the cut bones in a group named `cut_bones`. Any OBJ viewer shows it as a wire
 /// skeleton. \returns `os`. \b Complexity: O(J) for J joints.
 template <typename Point>
 std::ostream& write_OBJ(std::ostream& os, const Control_skeleton<Point>& skeleton)
 {
   const auto old_precision = os.precision(9);
-  os << "# control skeleton: " << skeleton.joints.size() << " joints, " << skeleton.bones.size()
-     << " bones\n";
-  for(const Control_joint<Point>& j : skeleton.joints)
-    os << "v " << CGAL::to_double(j.point.x()) << ' ' << CGAL::to_double(j.point.y()) << ' '
-       << CGAL::to_double(j.point.z()) << '\n';
+  os << "# control skeleton: " << num_vertices(skeleton) << " joints, " << num_edges(skeleton) << " bones\n";
+  for(const auto v : boost::make_iterator_range(vertices(skeleton)))
+  {
+    const Point& p = skeleton[v].point;
+    os << "v " << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << ' ' << CGAL::to_double(p.z()) << '\n';
+  }
   os << "g bones\n";
-  for(const Control_bone<Point>& b : skeleton.bones)
-    os << "l " << b.parent + 1 << ' ' << b.child + 1 << '\n';
-  if(!skeleton.cut_bones.empty())
+  for(const auto e : boost::make_iterator_range(edges(skeleton)))
+    os << "l " << source(e, skeleton) + 1 << ' ' << target(e, skeleton) + 1 << '\n';
+  const auto& cut_bones = skeleton[boost::graph_bundle].cut_bones;
+  if(!cut_bones.empty())
   {
     os << "g cut_bones\n";
-    for(const Control_bone<Point>& b : skeleton.cut_bones)
-      os << "l " << b.parent + 1 << ' ' << b.child + 1 << '\n';
+    for(const Control_cut_bone<Point>& b : cut_bones)
+      os << "l " << b.source + 1 << ' ' << b.target + 1 << '\n';
   }
   os.precision(old_precision);
   return os;

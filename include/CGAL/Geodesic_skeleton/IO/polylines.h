@@ -35,14 +35,16 @@ template <typename Point>
 std::ostream& write_polylines(std::ostream& os, const Control_skeleton<Point>& skeleton)
 {
   const auto old_precision = os.precision(9);
-  for(const auto* bones : {&skeleton.bones, &skeleton.cut_bones})
-    for(const Control_bone<Point>& bone : *bones)
-    {
-      os << bone.points.size();
-      for(const Point& p : bone.points)
-        internal::write_point(os, p);
-      os << '\n';
-    }
+  auto write_bone = [&](const Control_bone<Point>& bone) {
+    os << bone.points.size();
+    for(const Point& p : bone.points)
+      internal::write_point(os, p);
+    os << '\n';
+  };
+  for(const auto e : boost::make_iterator_range(edges(skeleton)))
+    write_bone(skeleton[e]);
+  for(const Control_cut_bone<Point>& bone : skeleton[boost::graph_bundle].cut_bones)
+    write_bone(bone);
   os.precision(old_precision);
   return os;
 }

@@ -58,6 +58,14 @@ inline std::vector<std::pair<std::size_t, std::size_t>> joint_pairs(const nlohma
   return pairs;
 }
 
+template <typename Point>
+double segment_length(const Point& p, const Point& q)
+{
+  const double d[3] = {CGAL::to_double(q.x()) - CGAL::to_double(p.x()), CGAL::to_double(q.y()) - CGAL::to_double(p.y()),
+                       CGAL::to_double(q.z()) - CGAL::to_double(p.z())};
+  return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+}
+
 } // namespace internal
 
 /// \ingroup PkgGeodesicSkeletonRef
@@ -84,7 +92,7 @@ inline std::vector<std::pair<std::size_t, std::size_t>> joint_pairs(const nlohma
 template <typename Point>
 void read_control_skeleton_json(const nlohmann::json& json, Control_skeleton<Point>& skeleton)
 {
-  skeleton.clear();
+  skeleton = Control_skeleton<Point>();
   if(!json.is_object())
     throw std::invalid_argument("a control skeleton must be a JSON object");
   const nlohmann::json& control = json.contains("control") ? json["control"] : json;
@@ -94,6 +102,7 @@ void read_control_skeleton_json(const nlohmann::json& json, Control_skeleton<Poi
   const nlohmann::json& joints = control["joints"];
   if(!joints.is_array() || joints.empty())
     throw std::invalid_argument("\"joints\" must be a non-empty array");
+  std::vector<long> parents; // per joint, -1 for a root
   for(std::size_t j = 0; j < joints.size(); ++j)
   {
     const nlohmann::json& joint = joints[j];
@@ -118,7 +127,10 @@ void read_control_skeleton_json(const nlohmann::json& json, Control_skeleton<Poi
     if(parent < -1 || parent >= long(joints.size()))
       throw std::invalid_argument(where + ": parent " + std::to_string(parent) + " does not exist (there are " +
                                   std::to_string(joints.size()) + " joints; -1 for a root)");
-    out.parent = int(parent);
+    if(parent == long(j))
+      throw std::invalid_argument("the control skeleton: joint " + std::to_string(j) + " has parent " +
+                                  std::to_string(j) + ", itself (a root has parent -1)");
+    parents.push_back(parent);
     if(joint.contains("radius"))
     {
       if(!joint["radius"].is_number() || !(joint["radius"].get<double>() >= 0))
@@ -126,13 +138,46 @@ void read_control_skeleton_json(const nlohmann::json& json, Control_skeleton<Poi
       out.radius = joint["radius"].get<double>();
     }
     out.skeleton_vertex = j;
-    skeleton.joints.push_back(out);
+    add_vertex(out, skeleton);
   }
+
+  auto add_bone = [&](std::size_t parent, std::size_t child) {
+    Control_bone<Point> b;
+    b.length = internal::segment_length(skeleton[parent].point, skeleton[child].point);
+    add_edge(parent, child, b, skeleton);
+  };
+  if(control.contains("bones"))
+  {
+    // Exactly one bone [parents[c], c] per joint c that has a parent, in the file's order.
+    const auto pairs = internal::joint_pairs(control["bones"], "bones", joints.size());
+    std::vector<bool> led_to(joints.size(), false);
+    for(std::size_t b = 0; b < pairs.size(); ++b)
+    {
+      const auto [parent, child] = pairs[b];
+      if(parents[child] != long(parent))
+        throw std::invalid_argument("the control skeleton: bone " + std::to_string(b) + " (" + std::to_string(parent) +
+                                    " -> " + std::to_string(child) + ") does not match the parent of joint " +
+                                    std::to_string(child) + " (" + std::to_string(parents[child]) + ")");
+      if(led_to[child])
+        throw std::invalid_argument("the control skeleton: two bones lead to joint " + std::to_string(child));
+      led_to[child] = true;
+    }
+    for(std::size_t j = 0; j < joints.size(); ++j)
+      if(parents[j] >= 0 && !led_to[j])
+        throw std::invalid_argument("the control skeleton: no bone leads to joint " + std::to_string(j) +
+                                    " from its parent " + std::to_string(parents[j]));
+    for(const auto& [parent, child] : pairs)
+      add_bone(parent, child);
+  }
+  else
+    for(std::size_t j = 0; j < joints.size(); ++j)
+      if(parents[j] >= 0)
+        add_bone(std::size_t(parents[j]), j);
   const Geodesic_skeleton::internal::Joint_tree tree =
       Geodesic_skeleton::internal::joint_tree(skeleton, "the control skeleton");
   for(std::size_t j = 0; j < joints.size(); ++j)
   {
-    Control_joint<Point>& joint = skeleton.joints[j];
+    Control_joint<Point>& joint = skeleton[j];
     if(joints[j].contains("kind"))
     {
       if(!joints[j]["kind"].is_string())
@@ -140,35 +185,21 @@ void read_control_skeleton_json(const nlohmann::json& json, Control_skeleton<Poi
       joint.kind = internal::joint_kind_of(joints[j]["kind"].get<std::string>(), "joints[" + std::to_string(j) + "]");
     }
     else
-      joint.kind = joint.parent < 0 ? Joint_kind::root : tree.children[j].empty() ? Joint_kind::end : Joint_kind::bend;
+      joint.kind = parents[j] < 0 ? Joint_kind::root : tree.children[j].empty() ? Joint_kind::end : Joint_kind::bend;
   }
 
-  auto bone = [&](std::size_t parent, std::size_t child) {
-    Control_bone<Point> b;
-    b.parent = parent;
-    b.child = child;
-    const Point& p = skeleton.joints[parent].point;
-    const Point& q = skeleton.joints[child].point;
-    const double d[3] = {CGAL::to_double(q.x()) - CGAL::to_double(p.x()), CGAL::to_double(q.y()) - CGAL::to_double(p.y()),
-                         CGAL::to_double(q.z()) - CGAL::to_double(p.z())};
-    b.length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    return b;
-  };
-  if(control.contains("bones"))
-  {
-    for(const auto& [parent, child] : internal::joint_pairs(control["bones"], "bones", joints.size()))
-      skeleton.bones.push_back(bone(parent, child));
-    Geodesic_skeleton::internal::bone_to_each_joint(skeleton, "the control skeleton"); // they match the parents
-  }
-  else
-    for(std::size_t j = 0; j < joints.size(); ++j)
-      if(skeleton.joints[j].parent >= 0)
-        skeleton.bones.push_back(bone(std::size_t(skeleton.joints[j].parent), j));
+  Control_skeleton_property<Point>& forest = skeleton[boost::graph_bundle];
   if(control.contains("cut_bones"))
     for(const auto& [a, b] : internal::joint_pairs(control["cut_bones"], "cut_bones", joints.size()))
-      skeleton.cut_bones.push_back(bone(a, b));
+    {
+      Control_cut_bone<Point> cut;
+      cut.source = a;
+      cut.target = b;
+      cut.length = internal::segment_length(skeleton[a].point, skeleton[b].point);
+      forest.cut_bones.push_back(cut);
+    }
 
-  skeleton.roots = tree.roots;
+  forest.roots = tree.roots;
   if(control.contains("roots"))
   {
     const nlohmann::json& roots = control["roots"];
@@ -182,7 +213,7 @@ void read_control_skeleton_json(const nlohmann::json& json, Control_skeleton<Poi
     std::sort(sorted.begin(), sorted.end());
     if(sorted != tree.roots)
       throw std::invalid_argument("\"roots\" must list exactly the joints whose parent is -1");
-    skeleton.roots = given; // the file's order
+    forest.roots = given; // the file's order
   }
 }
 

@@ -102,19 +102,22 @@ template <typename Point>
 Svg_overlay control_skeleton_overlay(const Control_skeleton<Point>& skeleton)
 {
   Svg_overlay overlay;
-  for(const auto* bones : {&skeleton.bones, &skeleton.cut_bones})
-    for(const Control_bone<Point>& bone : *bones)
-    {
-      Svg_overlay::Line line;
-      line.dashed = bones == &skeleton.cut_bones;
-      for(const Point& p : bone.points)
-        line.points.push_back(to_vec3(p));
-      if(line.points.size() < 2 && bone.parent < skeleton.joints.size() && bone.child < skeleton.joints.size())
-        line.points = {to_vec3(skeleton.joints[bone.parent].point), to_vec3(skeleton.joints[bone.child].point)};
-      overlay.lines.push_back(std::move(line));
-    }
-  for(const Control_joint<Point>& joint : skeleton.joints)
-    overlay.dots.push_back({to_vec3(joint.point), joint.radius, joint_colour(joint.kind)});
+  const std::size_t joints = num_vertices(skeleton);
+  auto add_line = [&](const Control_bone<Point>& bone, std::size_t from, std::size_t to, bool dashed) {
+    Svg_overlay::Line line;
+    line.dashed = dashed;
+    for(const Point& p : bone.points)
+      line.points.push_back(to_vec3(p));
+    if(line.points.size() < 2 && from < joints && to < joints)
+      line.points = {to_vec3(skeleton[from].point), to_vec3(skeleton[to].point)};
+    overlay.lines.push_back(std::move(line));
+  };
+  for(const auto e : boost::make_iterator_range(edges(skeleton)))
+    add_line(skeleton[e], source(e, skeleton), target(e, skeleton), false);
+  for(const Control_cut_bone<Point>& bone : skeleton[boost::graph_bundle].cut_bones)
+    add_line(bone, bone.source, bone.target, true);
+  for(const auto v : boost::make_iterator_range(vertices(skeleton)))
+    overlay.dots.push_back({to_vec3(skeleton[v].point), skeleton[v].radius, joint_colour(skeleton[v].kind)});
   return overlay;
 }
 

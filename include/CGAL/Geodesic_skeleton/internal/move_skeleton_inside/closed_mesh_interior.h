@@ -219,8 +219,9 @@ std::vector<std::size_t> move_curve_points_inside(const Voxel_frame& frame, cons
 template <typename Point>
 std::size_t joints_on_vertices(const Control_skeleton<Point>& control, const std::vector<std::size_t>& moved)
 {
-  return std::size_t(std::count_if(control.joints.begin(), control.joints.end(), [&](const Control_joint<Point>& j) {
-    return std::binary_search(moved.begin(), moved.end(), j.skeleton_vertex);
+  const auto joints = vertices(control);
+  return std::size_t(std::count_if(joints.first, joints.second, [&](std::size_t j) {
+    return std::binary_search(moved.begin(), moved.end(), control[j].skeleton_vertex);
   }));
 }
 

@@ -9,12 +9,14 @@
 
 #include <CGAL/Geodesic_skeleton/Control_skeleton.h>
 
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/connected_components.hpp>
+#include <boost/graph/dijkstra_shortest_paths.hpp>
+#include <boost/property_map/function_property_map.hpp>
+
 #include <algorithm>
 #include <cstddef>
-#include <functional>
 #include <limits>
-#include <queue>
-#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -22,50 +24,56 @@ namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
 
+// A bone of the joint graph before rooting: its points run from joint `first` to joint
+// `last`, and `index` is its rank among the bones (the order cut bones are listed in).
+template <typename Point>
+struct Joint_graph_bone : Control_bone<Point>
+{
+  std::size_t first = 0;
+  std::size_t last = 0;
+  std::size_t index = 0;
+};
+
 // A joint graph before rooting: joints (kind junction/bend/end) and undirected bones.
 template <typename Point>
-struct Joint_graph
-{
-  std::vector<Control_joint<Point>> joints;
-  std::vector<Control_bone<Point>> bones; // parent/child are just the two ends here
-};
-
-struct Shortest_paths
-{
-  std::vector<double> distance;
-  std::vector<long> via_bone; // bone to the predecessor, -1 at the source or unreached
-};
+using Joint_graph =
+    boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, Control_joint<Point>, Joint_graph_bone<Point>>;
 
 template <typename Point>
-Shortest_paths joint_distances(const Joint_graph<Point>& g,
-                               const std::vector<std::vector<std::size_t>>& bones_at,
-                               std::size_t source)
+void add_bone(std::size_t first, std::size_t last, Control_bone<Point> bone, Joint_graph<Point>& g)
 {
-  Shortest_paths sp{std::vector<double>(g.joints.size(), std::numeric_limits<double>::infinity()),
-                    std::vector<long>(g.joints.size(), -1)};
-  using Entry = std::pair<double, std::size_t>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-  sp.distance[source] = 0;
-  queue.emplace(0.0, source);
-  while(!queue.empty())
-  {
-    const auto [d, j] = queue.top();
-    queue.pop();
-    if(d > sp.distance[j])
-      continue;
-    for(std::size_t b : bones_at[j])
-    {
-      const Control_bone<Point>& bone = g.bones[b];
-      const std::size_t other = bone.parent == j ? bone.child : bone.parent;
-      const double nd = d + bone.length;
-      if(nd < sp.distance[other])
-      {
-        sp.distance[other] = nd;
-        sp.via_bone[other] = static_cast<long>(b);
-        queue.emplace(nd, other);
-      }
-    }
-  }
+  Joint_graph_bone<Point> b;
+  static_cast<Control_bone<Point>&>(b) = std::move(bone);
+  b.first = first;
+  b.last = last;
+  b.index = num_edges(g);
+  add_edge(first, last, std::move(b), g);
+}
+
+template <typename Point>
+struct Shortest_paths
+{
+  using Bone = typename boost::graph_traits<Joint_graph<Point>>::edge_descriptor;
+  std::vector<double> distance;
+  std::vector<Bone> via_bone; // the bone to the predecessor; meaningless at the source
+};
+
+// Distances along the bones from joint `source`, and the shortest-path tree.
+template <typename Point>
+Shortest_paths<Point> joint_distances(const Joint_graph<Point>& g, std::size_t source)
+{
+  using Bone = typename Shortest_paths<Point>::Bone;
+  const std::size_t n = num_vertices(g);
+  Shortest_paths<Point> sp{std::vector<double>(n), std::vector<Bone>(n)};
+  const auto bone_length = boost::make_function_property_map<Bone>([&g](const Bone& e) { return g[e].length; });
+  boost::dijkstra_shortest_paths(
+      g, source,
+      boost::weight_map(bone_length)
+          .distance_map(boost::make_iterator_property_map(sp.distance.begin(), get(boost::vertex_index, g)))
+          .distance_inf(std::numeric_limits<double>::infinity())
+          .visitor(boost::make_dijkstra_visitor(boost::record_edge_predecessors(
+              boost::make_iterator_property_map(sp.via_bone.begin(), get(boost::vertex_index, g)),
+              boost::on_edge_relaxed()))));
   return sp;
 }
 
@@ -73,56 +81,39 @@ Shortest_paths joint_distances(const Joint_graph<Point>& g,
 // farthest joint (along the bones) is nearest, i.e. the centre of the component's graph
 // (ties: larger radius, then smaller index); a component without junction takes its
 // central joint of any kind. The tree is the shortest-path tree from the root; bones off
-// it close cycles and are cut. Joints are renumbered so that parents come first.
+// it close cycles and are cut. Joints are renumbered so that parents come first, and
+// bones are added in the order of their child joints.
 template <typename Point>
 Control_skeleton<Point> root_joint_graph(const Joint_graph<Point>& g)
 {
-  const std::size_t n = g.joints.size();
-  std::vector<std::vector<std::size_t>> bones_at(n);
-  for(std::size_t b = 0; b < g.bones.size(); ++b)
-  {
-    bones_at[g.bones[b].parent].push_back(b);
-    if(g.bones[b].child != g.bones[b].parent)
-      bones_at[g.bones[b].child].push_back(b);
-  }
-
-  // Components, and the eccentricity of the candidate roots of each.
-  std::vector<long> component(n, -1);
-  std::vector<std::vector<std::size_t>> members;
-  for(std::size_t s = 0; s < n; ++s)
-  {
-    if(component[s] >= 0)
-      continue;
-    const Shortest_paths sp = joint_distances(g, bones_at, s);
-    members.emplace_back();
-    for(std::size_t j = 0; j < n; ++j)
-      if(sp.distance[j] < std::numeric_limits<double>::infinity())
-      {
-        component[j] = static_cast<long>(members.size() - 1);
-        members.back().push_back(j);
-      }
-  }
+  const std::size_t n = num_vertices(g);
+  std::vector<std::size_t> component(n);
+  const std::size_t components = n == 0 ? 0 : boost::connected_components(
+      g, boost::make_iterator_property_map(component.begin(), get(boost::vertex_index, g)));
+  std::vector<std::vector<std::size_t>> members(components);
+  for(std::size_t j = 0; j < n; ++j)
+    members[component[j]].push_back(j);
 
   Control_skeleton<Point> out;
-  std::vector<bool> in_tree(g.bones.size(), false);
+  std::vector<bool> in_tree(num_edges(g), false);
   for(const std::vector<std::size_t>& part : members)
   {
     const bool has_junction = std::any_of(part.begin(), part.end(), [&](std::size_t j) {
-      return g.joints[j].kind == Joint_kind::junction;
+      return g[j].kind == Joint_kind::junction;
     });
     std::size_t root = part.front();
     double best = std::numeric_limits<double>::infinity();
-    Shortest_paths root_paths;
+    Shortest_paths<Point> root_paths;
     for(std::size_t j : part)
     {
-      if(has_junction && g.joints[j].kind != Joint_kind::junction)
+      if(has_junction && g[j].kind != Joint_kind::junction)
         continue;
-      Shortest_paths sp = joint_distances(g, bones_at, j);
+      Shortest_paths<Point> sp = joint_distances(g, j);
       double eccentricity = 0;
       for(std::size_t k : part)
         eccentricity = std::max(eccentricity, sp.distance[k]);
       const bool better = eccentricity < best - 1e-12 ||
-                          (eccentricity <= best + 1e-12 && g.joints[j].radius > g.joints[root].radius);
+                          (eccentricity <= best + 1e-12 && g[j].radius > g[root].radius);
       if(better)
       {
         best = eccentricity;
@@ -132,53 +123,50 @@ Control_skeleton<Point> root_joint_graph(const Joint_graph<Point>& g)
     }
 
     // Breadth-first order from the root along tree bones, so that parents come first.
-    std::vector<long> new_index(n, -1);
+    auto parent_in_tree = [&](std::size_t j) {
+      const auto& bone = g[root_paths.via_bone[j]];
+      return bone.first == j ? bone.last : bone.first;
+    };
     std::vector<std::size_t> order{root};
     std::vector<std::vector<std::size_t>> tree_children(n);
     for(std::size_t j : part)
-      if(root_paths.via_bone[j] >= 0)
+      if(j != root)
       {
-        const Control_bone<Point>& bone = g.bones[static_cast<std::size_t>(root_paths.via_bone[j])];
-        tree_children[bone.parent == j ? bone.child : bone.parent].push_back(j);
-        in_tree[static_cast<std::size_t>(root_paths.via_bone[j])] = true;
+        tree_children[parent_in_tree(j)].push_back(j);
+        in_tree[g[root_paths.via_bone[j]].index] = true;
       }
     for(std::size_t k = 0; k < order.size(); ++k)
       for(std::size_t c : tree_children[order[k]])
         order.push_back(c);
 
-    const std::size_t first = out.joints.size();
-    for(std::size_t k = 0; k < order.size(); ++k)
-      new_index[order[k]] = static_cast<long>(first + k);
-    out.roots.push_back(first);
+    std::vector<std::size_t> new_index(n);
     for(std::size_t j : order)
     {
-      Control_joint<Point> joint = g.joints[j];
+      Control_joint<Point> joint = g[j];
+      if(j == root)
+        joint.kind = Joint_kind::root;
+      new_index[j] = add_vertex(joint, out);
       if(j == root)
       {
-        joint.kind = Joint_kind::root;
-        joint.parent = -1;
-        out.joints.push_back(joint);
+        out[boost::graph_bundle].roots.push_back(new_index[j]);
         continue;
       }
-      Control_bone<Point> bone = g.bones[static_cast<std::size_t>(root_paths.via_bone[j])];
-      const std::size_t parent = bone.parent == j ? bone.child : bone.parent;
-      if(bone.parent == j) // orient the bone from parent to child
-        std::reverse(bone.points.begin(), bone.points.end());
-      bone.parent = static_cast<std::size_t>(new_index[parent]);
-      bone.child = static_cast<std::size_t>(new_index[j]);
-      joint.parent = static_cast<int>(bone.parent);
-      out.joints.push_back(joint);
-      out.bones.push_back(std::move(bone));
+      const Joint_graph_bone<Point>& bone = g[root_paths.via_bone[j]];
+      Control_bone<Point> oriented = bone;
+      if(bone.first == j) // orient the bone from parent to child
+        std::reverse(oriented.points.begin(), oriented.points.end());
+      add_edge(new_index[parent_in_tree(j)], new_index[j], std::move(oriented), out);
     }
-    for(std::size_t b = 0; b < g.bones.size(); ++b)
+    for(const auto e : boost::make_iterator_range(edges(g)))
     {
-      const Control_bone<Point>& bone = g.bones[b];
-      if(in_tree[b] || component[bone.parent] != component[root])
+      const Joint_graph_bone<Point>& bone = g[e];
+      if(in_tree[bone.index] || component[bone.first] != component[root])
         continue;
-      Control_bone<Point> cut = bone;
-      cut.parent = static_cast<std::size_t>(new_index[bone.parent]);
-      cut.child = static_cast<std::size_t>(new_index[bone.child]);
-      out.cut_bones.push_back(std::move(cut));
+      Control_cut_bone<Point> cut;
+      static_cast<Control_bone<Point>&>(cut) = bone;
+      cut.source = new_index[bone.first];
+      cut.target = new_index[bone.last];
+      out[boost::graph_bundle].cut_bones.push_back(std::move(cut));
     }
   }
   return out;
