@@ -63,7 +63,8 @@ namespace Geodesic_skeleton {
 /// parts cross (legs crossed at the contact), removing the crossing would split the
 /// skeleton, and the cycle stays.
 ///
-/// \tparam VoxelSet a model of `VoxelSet`.
+/// \tparam VoxelSet a model of `VoxelSet`. Whatever the model, its voxels are indexed in a
+///         dense array over its bounding box.
 /// \tparam FaceGraph a model of `FaceListGraph`, the mesh the skeleton was computed from.
 /// \param skeleton a one-voxel-thick voxel skeleton (`thin()`), in the frame of the mesh's
 ///        voxelization; the removed voxels leave it.

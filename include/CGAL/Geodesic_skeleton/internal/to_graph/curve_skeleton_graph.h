@@ -39,7 +39,8 @@ namespace internal {
 class Nearest_node_inside
 {
 public:
-  Nearest_node_inside(const Voxel_distance_field& distances, const std::vector<Voxel_key>& nodes)
+  template <typename VoxelDistanceField>
+  Nearest_node_inside(const VoxelDistanceField& distances, const std::vector<Voxel_key>& nodes)
     : m_layout(distances.box().grown(1))
   {
     // Over the field's box grown by one voxel, so that the wave needs no bounds check:
@@ -155,8 +156,9 @@ std::vector<Voxel_frame::Vector> skeleton_points_inside(const std::vector<Voxel_
 
 // to_graph() with its inside tests against `mesh_lines` (a callable returning the mesh's
 // Grid_line_crossings in the frame of the skeleton).
-template <typename VoxelSet, typename FaceGraph, typename Graph, typename VertexPointMap, typename MeshLines>
-void to_graph_impl(const VoxelSet& skeleton, const Voxel_distance_field& distances, const FaceGraph& mesh,
+template <typename VoxelSet, typename VoxelDistanceField, typename FaceGraph, typename Graph, typename VertexPointMap,
+          typename MeshLines>
+void to_graph_impl(const VoxelSet& skeleton, const VoxelDistanceField& distances, const FaceGraph& mesh,
                    Graph& graph, VertexPointMap vpm, double memory_limit, MeshLines& mesh_lines)
 {
   using Vertex_bundle = typename boost::vertex_bundle_type<Graph>::type;
