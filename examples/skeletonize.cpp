@@ -14,7 +14,6 @@
 #include <CGAL/Geodesic_skeleton/IO/json.h>
 #include <CGAL/Geodesic_skeleton/IO/read_control_skeleton_json.h>
 #include <CGAL/Geodesic_skeleton/compute_skinning_weights.h>
-#include <CGAL/Geodesic_skeleton/internal/disjoint_sets.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -407,12 +406,12 @@ void write_file(const std::string& path, const std::string& text)
 // property maps, and on a mesh of a million faces costs as much as the whole chain).
 std::size_t count_connected_parts(const Mesh& mesh)
 {
-  gs::internal::Disjoint_sets parts(mesh.num_vertices()); // by vertex index, removed ones too
+  boost::disjoint_sets_with_storage<> parts(mesh.num_vertices()); // by vertex index, removed ones too
+  for(auto e : edges(mesh))
+    parts.union_set(std::size_t(source(e, mesh)), std::size_t(target(e, mesh)));
   std::size_t count = 0;
   for(vertex_descriptor v : vertices(mesh))
-    count += !mesh.is_isolated(v);
-  for(auto e : edges(mesh))
-    count -= parts.unite(std::size_t(source(e, mesh)), std::size_t(target(e, mesh)));
+    count += !mesh.is_isolated(v) && parts.find_set(std::size_t(v)) == std::size_t(v);
   return count;
 }
 

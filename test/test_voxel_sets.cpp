@@ -1,18 +1,38 @@
 // Specification of the VoxelSet concept's models (Dense_voxel_grid.h, Sparse_voxel_set.h),
-// of Voxel_key.h and of Voxel_frame.h.
+// of Voxel_key.h and of Voxel_frame.h; every voxel stage on the archetypes of the VoxelSet
+// and VoxelDistanceField concepts.
+#include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
 #include <CGAL/Geodesic_skeleton/Voxel_frame.h>
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
+#include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
+#include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>
+#include <CGAL/Geodesic_skeleton/distance_transform.h>
+#include <CGAL/Geodesic_skeleton/prune_skeleton.h>
+#include <CGAL/Geodesic_skeleton/remove_small_pieces.h>
+#include <CGAL/Geodesic_skeleton/thin.h>
+#include <CGAL/Geodesic_skeleton/to_graph.h>
+#include <CGAL/Geodesic_skeleton/voxelize.h>
+
+#include <Geodesic_skeleton_test/shapes.h>
+#include <Geodesic_skeleton_test/voxel_archetypes.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
 
 #include <boost/mpl/list.hpp>
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <random>
 #include <set>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace gs = CGAL::Geodesic_skeleton;
@@ -31,9 +51,84 @@ std::set<gs::Voxel_key> keys_of(const VoxelSet& s)
   return keys;
 }
 
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using Skeleton = gs::Curve_skeleton<Kernel::Point_3, Mesh::Vertex_index>;
+
+// What every voxel stage gives, run in the order of extract_control_skeleton().
+struct Stage_outputs
+{
+  std::size_t solid_size = 0, thinned_away = 0, cut_away = 0;
+  std::set<gs::Voxel_key> solid, thinned, pruned;
+  std::vector<std::uint32_t> squared_distances;
+  std::array<std::size_t, 3> small_pieces{};
+  std::array<std::size_t, 5> pruning{}, classes{};
+  std::vector<std::tuple<gs::Voxel_key, double, double, double, double, std::size_t>> nodes;
+  std::set<std::pair<std::size_t, std::size_t>> edges;
+};
+
+// `as_field` turns distance_transform()'s result into the field type the stages get.
+template <typename VoxelSet, typename AsField>
+Stage_outputs run_voxel_stages(const Mesh& mesh, AsField as_field)
+{
+  Stage_outputs out;
+  VoxelSet voxels;
+  out.solid_size = gs::voxelize(mesh, voxels, gs::parameters::resolution(40));
+  out.solid = keys_of(voxels);
+  const auto field = as_field(gs::distance_transform(voxels));
+  out.squared_distances = field.values();
+  out.thinned_away = gs::thin(voxels, field);
+  out.thinned = keys_of(voxels);
+  const gs::Small_pieces_report pieces = gs::remove_small_pieces(voxels, field);
+  out.small_pieces = {pieces.pieces, pieces.removed_pieces, pieces.removed_voxels};
+  out.cut_away = gs::cut_spurious_cycles(voxels, mesh);
+  const gs::Pruning_report pruning = gs::prune_skeleton(voxels);
+  out.pruning = {pruning.branched_regions, pruning.removed_branched_points, pruning.snipped_branches,
+                 pruning.snipped_points, pruning.rounds};
+  out.pruned = keys_of(voxels);
+  const gs::Skeleton_point_counts counts = gs::count_skeleton_points(voxels);
+  out.classes = {counts.isolated, counts.end, counts.middle, counts.connection, counts.branched_connection};
+  Skeleton graph;
+  gs::to_graph(voxels, field, mesh, graph);
+  for(auto v : boost::make_iterator_range(vertices(graph)))
+    out.nodes.emplace_back(graph[v].voxel, graph[v].point.x(), graph[v].point.y(), graph[v].point.z(),
+                           graph[v].radius, graph[v].vertices.size());
+  for(auto e : boost::make_iterator_range(edges(graph)))
+    out.edges.emplace(std::minmax(std::size_t(source(e, graph)), std::size_t(target(e, graph))));
+  return out;
+}
+
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(voxel_sets)
+
+// The archetypes have the concepts' members and nothing more: this compiles only if no
+// stage asks more of a voxel set or of a distance field than its concept says.
+BOOST_AUTO_TEST_CASE(every_voxel_stage_runs_on_the_concept_archetypes_as_on_a_sparse_set)
+{
+  // A torus with a bar through its hole: a cycle, junctions, end branches.
+  Geodesic_skeleton_test::Soup soup = Geodesic_skeleton_test::torus(2, 0.6, 48, 16);
+  Geodesic_skeleton_test::append(soup, Geodesic_skeleton_test::box(-3, -0.3, -0.3, 3, 0.3, 0.3));
+  const Mesh mesh = Geodesic_skeleton_test::mesh_of<Mesh>(soup);
+  const Stage_outputs sparse =
+      run_voxel_stages<gs::Sparse_voxel_set>(mesh, [](gs::Voxel_distance_field f) { return f; });
+  const Stage_outputs archetype = run_voxel_stages<Geodesic_skeleton_test::Voxel_set_archetype>(
+      mesh, [](gs::Voxel_distance_field f) { return Geodesic_skeleton_test::Voxel_distance_field_archetype(std::move(f)); });
+  BOOST_TEST(sparse.thinned_away > 0u);
+  BOOST_TEST(sparse.edges.size() > 0u);
+  BOOST_TEST(archetype.solid_size == sparse.solid_size);
+  BOOST_TEST((archetype.solid == sparse.solid));
+  BOOST_TEST((archetype.squared_distances == sparse.squared_distances));
+  BOOST_TEST(archetype.thinned_away == sparse.thinned_away);
+  BOOST_TEST((archetype.thinned == sparse.thinned));
+  BOOST_TEST((archetype.small_pieces == sparse.small_pieces));
+  BOOST_TEST(archetype.cut_away == sparse.cut_away);
+  BOOST_TEST((archetype.pruning == sparse.pruning));
+  BOOST_TEST((archetype.pruned == sparse.pruned));
+  BOOST_TEST((archetype.classes == sparse.classes));
+  BOOST_TEST((archetype.nodes == sparse.nodes));
+  BOOST_TEST((archetype.edges == sparse.edges));
+}
 
 BOOST_AUTO_TEST_CASE_TEMPLATE(a_model_behaves_like_a_set_of_keys, VoxelSet, Voxel_set_models)
 {

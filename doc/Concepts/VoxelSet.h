@@ -9,8 +9,20 @@
 
 The concept `VoxelSet` describes a finite set of voxels placed in space: the input and
 output of the voxel stages of the package (`voxelize()`, `distance_transform()`,
-`thin()`, `to_graph()`). Every voxel algorithm of the package is written against this
-concept only, so it runs on a dense grid and on a sparse set alike.
+`thin()`, `remove_small_pieces()`, `cut_spurious_cycles()`, `prune_skeleton()`,
+`classify_skeleton_points()`, `to_graph()`). Every voxel algorithm of the package is
+written against this concept only, so it runs on a dense grid and on a sparse set alike
+(the package's tests instantiate every stage with an archetype that has the members below
+and nothing more).
+
+<b>Dense copies.</b> The concept gives no access to a model's storage, so the stages that
+sweep a whole box copy the set into a dense array over its `bounding_box()`, whatever the
+model: `distance_transform()` (the field's array), `thin()` (one byte per voxel of the box
+grown by two), `cut_spurious_cycles()` and `to_graph()` (an index per voxel of the box);
+`voxelize()` computes the solid in dense arrays over the grid's box and inserts it into
+the set voxel by voxel. A sparse model therefore saves memory between the stages, not in
+them. `remove_small_pieces()`, `prune_skeleton()` and `classify_skeleton_points()` read
+the set through `for_each()` and `contains()` only.
 
 A voxel is a `Voxel_key` (integer coordinates `x`, `y`, `z`); its 26-neighbourhood is
 given by `neighbourhood_26()` (header `Voxel_key.h`), independent of the model. The

@@ -27,6 +27,8 @@ namespace Geodesic_skeleton {
 /// the nearest voxel outside it, stored densely over a box that contains the solid and one
 /// layer of outside voxels around it. A voxel outside the box or outside the solid has
 /// distance 0. Built by `distance_transform()`; copyable, O(1) queries.
+///
+/// \cgalModels `VoxelDistanceField`
 class Voxel_distance_field
 {
 public:

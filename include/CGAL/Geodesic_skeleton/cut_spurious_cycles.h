@@ -11,7 +11,6 @@
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/Voxelized_surface.h>
 #include <CGAL/Geodesic_skeleton/internal/cut_spurious_cycles/spurious_cycles.h>
-#include <CGAL/Geodesic_skeleton/internal/disjoint_sets.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_line_crossings.h>
 #include <CGAL/Geodesic_skeleton/internal/to_graph/skeleton_adjacency.h>
@@ -45,7 +44,8 @@ namespace Geodesic_skeleton {
 /// cycle without splitting a connected component. The method, what it keeps and its limits
 /// are described in the manual, section \ref manual_cut_spurious_cycles.
 ///
-/// \tparam VoxelSet a model of `VoxelSet`.
+/// \tparam VoxelSet a model of `VoxelSet`. Whatever the model, its voxels are indexed in a
+///         dense array over its bounding box.
 /// \tparam FaceGraph a model of `FaceListGraph`, the mesh the skeleton was computed from.
 /// \param skeleton a one-voxel-thick voxel skeleton (`thin()`), in the frame of the mesh's
 ///        voxelization; the removed voxels leave it.

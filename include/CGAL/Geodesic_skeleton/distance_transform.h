@@ -100,7 +100,8 @@ inline void lower_envelope_pass(std::uint32_t* data, std::size_t n, std::ptrdiff
 /// (two scans); then along y and along z, the lower envelope of parabolas of Felzenszwalb
 /// and Huttenlocher, which is exact for the Euclidean metric. Integer arithmetic.
 ///
-/// \tparam VoxelSet a model of `VoxelSet`.
+/// \tparam VoxelSet a model of `VoxelSet`. Whatever the model, the set is copied into a
+///         dense array over its bounding box (the field's own array).
 /// \param voxels the solid (e.g. `voxelize()`'s output); it is not modified.
 /// \param np an optional sequence of \ref manual_named_parameters "named parameters"
 ///        among the ones listed below:

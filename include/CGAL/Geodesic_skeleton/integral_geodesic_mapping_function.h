@@ -10,10 +10,11 @@
 
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/internal/geodesics/distance_fields.h>
-#include <CGAL/Geodesic_skeleton/internal/vec3.h>
 #include <CGAL/Geodesic_skeleton/internal/geodesics/vertex_components.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -30,26 +31,33 @@ namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
 
-// A third of the area of the faces around each vertex (polygons split in fans), by index.
-template <typename FaceGraph, typename VertexPointMap, typename VertexIndexMap>
-std::vector<double> vertex_areas(const FaceGraph& g, VertexPointMap vpm, VertexIndexMap vim)
+// A third of the area of the faces around each vertex, by index: the area of a triangle by
+// PMP::face_area(), that of another polygon as the sum of the triangles of a fan from its
+// first corner.
+template <typename FaceGraph, typename VertexPointMap, typename GeomTraits, typename VertexIndexMap>
+std::vector<double> vertex_areas(const FaceGraph& g, VertexPointMap vpm, const GeomTraits& traits,
+                                 VertexIndexMap vim)
 {
   std::vector<double> area(static_cast<std::size_t>(num_vertices(g)), 0.0);
+  const auto squared_area = traits.compute_squared_area_3_object();
+  std::vector<std::size_t> ids;
   for(auto f : faces(g))
   {
-    std::vector<Vec3> corners;
-    std::vector<std::size_t> ids;
-    for(auto v : CGAL::vertices_around_face(halfedge(f, g), g))
-    {
-      const auto& p = get(vpm, v);
-      corners.push_back({CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
-      ids.push_back(static_cast<std::size_t>(get(vim, v)));
-    }
     double face_area = 0;
-    for(std::size_t k = 1; k + 1 < corners.size(); ++k)
+    if(CGAL::is_triangle(halfedge(f, g), g))
+      face_area = CGAL::to_double(CGAL::Polygon_mesh_processing::face_area(
+          f, g, CGAL::parameters::vertex_point_map(vpm).geom_traits(traits)));
+    else
     {
-      face_area += 0.5 * norm3(cross3(sub(corners[k], corners[0]), sub(corners[k + 1], corners[0])));
+      const auto h = halfedge(f, g);
+      const auto& corner = get(vpm, target(h, g));
+      for(auto k = next(h, g); target(next(k, g), g) != target(h, g); k = next(k, g))
+        face_area += CGAL::to_double(CGAL::approximate_sqrt(
+            squared_area(corner, get(vpm, target(k, g)), get(vpm, target(next(k, g), g)))));
     }
+    ids.clear();
+    for(auto v : CGAL::vertices_around_face(halfedge(f, g), g))
+      ids.push_back(static_cast<std::size_t>(get(vim, v)));
     for(std::size_t i : ids)
       area[i] += face_area / static_cast<double>(ids.size());
   }
@@ -154,7 +162,10 @@ void integral_geodesic_mapping_function(const FaceGraph& mesh, VertexScalarMap f
   }
 
   // Voronoi areas of the base vertices, then the integral.
-  const std::vector<double> area = internal::vertex_areas(mesh, vpm, vim);
+  const std::vector<double> area = internal::vertex_areas(
+      mesh, vpm, choose_parameter<typename GetGeomTraits<FaceGraph, NamedParameters>::type>(
+                     get_parameter(np, CGAL::internal_np::geom_traits)),
+      vim);
   std::vector<double> cell_area(base_fields.size(), 0.0);
   for(vertex_descriptor v : vertices(mesh))
     cell_area[nearest_base[index(v)]] += area[index(v)];

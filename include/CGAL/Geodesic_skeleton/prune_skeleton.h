@@ -54,7 +54,8 @@ struct Pruning_report
 /// that passes through a region (the cycle's two terminators stay linked through the
 /// centroid) and never snips a path component (no junction).
 ///
-/// \tparam VoxelSet a model of `VoxelSet`.
+/// \tparam VoxelSet a model of `VoxelSet`; read through `for_each()` and `contains()`
+///         (no dense copy: the classes and the regions are kept in hash maps by key).
 /// \param skeleton a one-voxel-thick skeleton, e.g. from thinning; modified in place.
 /// \param np an optional sequence of \ref manual_named_parameters "named parameters"
 ///        among the ones listed below:

@@ -84,8 +84,8 @@ std::size_t voxel_components(const VoxelSet& voxels, const std::vector<Voxel_key
 
 // The number of voxels of the solid of `distances` (its non-zero voxels) in the
 // 26-connected component of each seed, by a search from each seed not yet reached.
-inline std::vector<std::size_t> solid_piece_sizes(const Voxel_distance_field& distances,
-                                                  const std::vector<Voxel_key>& seeds)
+template <typename VoxelDistanceField>
+std::vector<std::size_t> solid_piece_sizes(const VoxelDistanceField& distances, const std::vector<Voxel_key>& seeds)
 {
   const Grid_layout layout(distances.box());
   std::vector<std::int32_t> piece(layout.volume(), -1);
@@ -139,7 +139,11 @@ inline std::vector<std::size_t> solid_piece_sizes(const Voxel_distance_field& di
 /// vertices of a removed piece then map to the nearest point of the body's skeleton, so that
 /// the piece follows the body it belongs to.
 ///
-/// \tparam VoxelSet a model of `VoxelSet`.
+/// \tparam VoxelSet a model of `VoxelSet`; read through `for_each()` and `contains()` only
+///         (no dense copy).
+/// \tparam VoxelDistanceField a model of `VoxelDistanceField` (`Voxel_distance_field`);
+///         when there are several pieces, its solid is searched through a dense array of
+///         labels over its box.
 /// \param skeleton a voxel skeleton (`thin()`); the small pieces leave it.
 /// \param distances the distance field of the solid it was thinned from
 ///        (`distance_transform()`): its non-zero voxels are the solid.
@@ -159,8 +163,9 @@ inline std::vector<std::size_t> solid_piece_sizes(const Voxel_distance_field& di
 ///
 /// \b Complexity: O(S log S) for S skeleton voxels when the skeleton is in one piece;
 ///    otherwise O(S log S + B) for B voxels in the field's box.
-template <typename VoxelSet, typename NamedParameters = CGAL::parameters::Default_named_parameters>
-Small_pieces_report remove_small_pieces(VoxelSet& skeleton, const Voxel_distance_field& distances,
+template <typename VoxelSet, typename VoxelDistanceField,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Small_pieces_report remove_small_pieces(VoxelSet& skeleton, const VoxelDistanceField& distances,
                                         const NamedParameters& np = CGAL::parameters::default_values())
 {
   using CGAL::parameters::choose_parameter;

@@ -38,7 +38,11 @@ namespace Geodesic_skeleton {
 /// guarantees, the simple-point test) is described in the manual, section
 /// \ref manual_thin.
 ///
-/// \tparam VoxelSet a model of `VoxelSet`.
+/// \tparam VoxelSet a model of `VoxelSet`. Whatever the model, the set is copied into a
+///         dense array of bytes over its bounding box grown by two voxels, thinned there,
+///         and the deleted voxels are then erased from the set.
+/// \tparam VoxelDistanceField a model of `VoxelDistanceField` (`Voxel_distance_field`);
+///         its values over that box are copied into a dense array too.
 /// \param voxels the solid, thinned in place (voxels are only erased).
 /// \param distances its distance field, from `distance_transform(voxels)` (a voxel outside
 ///        the field's box has distance 0 and burns first).
@@ -64,8 +68,9 @@ namespace Geodesic_skeleton {
 /// \b Complexity: O(B + N) time and memory for B voxels in the set's bounding box and N in
 ///    the set (each deletion re-queues at most 26 neighbours; the distances are sorted by
 ///    counting).
-template <typename VoxelSet, typename NamedParameters = CGAL::parameters::Default_named_parameters>
-std::size_t thin(VoxelSet& voxels, const Voxel_distance_field& distances,
+template <typename VoxelSet, typename VoxelDistanceField,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+std::size_t thin(VoxelSet& voxels, const VoxelDistanceField& distances,
                  const NamedParameters& np = CGAL::parameters::default_values())
 {
   const char* caller = "thin";

@@ -51,7 +51,10 @@ namespace Geodesic_skeleton {
 /// edges, the mapping of the mesh vertices) is described in the manual, section
 /// \ref manual_to_graph.
 ///
-/// \tparam VoxelSet a model of `VoxelSet`.
+/// \tparam VoxelSet a model of `VoxelSet`. Whatever the model, its voxels are indexed in a
+///         dense array over its bounding box.
+/// \tparam VoxelDistanceField a model of `VoxelDistanceField` (`Voxel_distance_field`);
+///         its solid is copied into a dense array of labels over its box.
 /// \tparam FaceGraph a model of `FaceListGraph`: its vertices are mapped, its faces decide
 ///         which voxel centres are inside.
 /// \tparam Graph a `boost::adjacency_list` with `vecS` vertices, such as
@@ -137,9 +140,9 @@ namespace Geodesic_skeleton {
 /// \b Complexity: O(S + B + M + F) time for S skeleton voxels, B voxels in the field's box,
 ///    M mesh vertices and F faces (plus the grid cells that the faces cover, seen along
 ///    each axis, and the rare triangle clusters, each of a few voxels).
-template <typename VoxelSet, typename FaceGraph, typename Graph,
+template <typename VoxelSet, typename VoxelDistanceField, typename FaceGraph, typename Graph,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
-void to_graph(const VoxelSet& skeleton, const Voxel_distance_field& distances,
+void to_graph(const VoxelSet& skeleton, const VoxelDistanceField& distances,
               const FaceGraph& mesh, Graph& graph,
               const NamedParameters& np = CGAL::parameters::default_values())
 {

@@ -54,7 +54,9 @@ namespace Geodesic_skeleton {
 /// \tparam FaceGraph a model of `FaceListGraph` (`Surface_mesh`, `Polyhedron_3`, ...); its
 ///         faces may be polygons (they are split into fans of triangles), it may be open,
 ///         non-manifold, self-intersecting, or have several components.
-/// \tparam VoxelSet a model of `VoxelSet` (`Dense_voxel_grid`, `Sparse_voxel_set`).
+/// \tparam VoxelSet a model of `VoxelSet` (`Dense_voxel_grid`, `Sparse_voxel_set`). Whatever
+///         the model, the solid is computed in dense arrays over the grid's box, then
+///         inserted into `voxels` voxel by voxel.
 /// \param mesh the mesh.
 /// \param voxels receives the solid (reset first); its frame is the grid's frame and its
 ///        box the tight box of the solid.

@@ -4,12 +4,13 @@
 #ifndef CGAL_GEODESIC_SKELETON_INTERNAL_SKELETON_BRANCHES_H
 #define CGAL_GEODESIC_SKELETON_INTERNAL_SKELETON_BRANCHES_H
 
+#include <CGAL/boost/graph/split_graph_into_polylines.h>
+
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/graph_traits.hpp>
 
 #include <algorithm>
 #include <cstddef>
-#include <set>
 #include <utility>
 #include <vector>
 
@@ -26,74 +27,73 @@ struct Skeleton_branch
   bool closed = false;
 };
 
-// Splits a graph with vecS vertex storage into its branches. Every edge belongs to
-// exactly one branch. Deterministic: branches are found from the nodes in index order.
+// Collects the polylines of CGAL::split_graph_into_polylines().
+struct Polyline_collector
+{
+  std::vector<std::vector<std::size_t>> polylines;
+  void start_new_polyline() { polylines.emplace_back(); }
+  template <typename VertexDescriptor>
+  void add_node(VertexDescriptor v)
+  {
+    polylines.back().push_back(static_cast<std::size_t>(v));
+  }
+  void end_polyline() {}
+};
+
+// Splits a graph with vecS vertex storage into its branches (by
+// CGAL::split_graph_into_polylines(); self loops and parallel edges are ignored, isolated
+// vertices give no branch). Every edge belongs to exactly one branch.
 //
-// Complexity: O((V + E) log E).
+// Deterministic, in a fixed order and direction: the open branches first, each walked from
+// its node of lower index (a loop through one node: towards the lower of its two
+// neighbours on the loop), sorted by their first then their second vertex; then the closed
+// loops, each starting at its vertex of lower index towards the lower of that vertex's two
+// neighbours, sorted by their first vertex.
+//
+// Complexity: O((V + E) log V).
 template <typename Graph>
 std::vector<Skeleton_branch> skeleton_branches(const Graph& g)
 {
-  std::set<std::pair<std::size_t, std::size_t>> walked;
-  auto edge_key = [](std::size_t a, std::size_t b) {
-    return std::pair<std::size_t, std::size_t>(std::min(a, b), std::max(a, b));
-  };
-  auto neighbours = [&](std::size_t v) {
-    std::vector<std::size_t> n;
+  Polyline_collector collector;
+  CGAL::split_graph_into_polylines(g, collector);
+
+  auto is_node = [&](std::size_t v) { // as CGAL's function counts: self loops and parallel edges ignored
+    std::vector<std::size_t> neighbours;
     for(auto w : boost::make_iterator_range(boost::adjacent_vertices(v, g)))
-      if(static_cast<std::size_t>(w) != v) // ignore self loops
-        n.push_back(static_cast<std::size_t>(w));
-    std::sort(n.begin(), n.end());
-    n.erase(std::unique(n.begin(), n.end()), n.end());
-    return n;
+      if(static_cast<std::size_t>(w) != v)
+        neighbours.push_back(static_cast<std::size_t>(w));
+    std::sort(neighbours.begin(), neighbours.end());
+    return std::unique(neighbours.begin(), neighbours.end()) - neighbours.begin() != 2;
   };
-  auto is_node = [&](std::size_t v) { return neighbours(v).size() != 2; };
-
-  // Walks from `from` through `next` along vertices of degree 2 until a node, or back to
-  // `from` (a loop through a node).
-  auto walk = [&](std::size_t from, std::size_t next, bool stop_at_start) {
+  std::vector<Skeleton_branch> open, closed;
+  for(std::vector<std::size_t>& polyline : collector.polylines)
+  {
+    if(polyline.size() < 2)
+      continue; // an isolated vertex
     Skeleton_branch branch;
-    branch.vertices = {from};
-    std::size_t previous = from, current = next;
-    walked.insert(edge_key(previous, current));
-    while(true)
+    const std::size_t first = polyline.front();
+    // A polyline that comes back to its start is a loop through a node, or a closed loop
+    // when its start is no node.
+    branch.closed = polyline.back() == first && !is_node(first);
+    if(branch.closed)
     {
-      branch.vertices.push_back(current);
-      if(is_node(current) || (stop_at_start && current == from))
-        break;
-      const std::vector<std::size_t> n = neighbours(current);
-      const std::size_t following = n[0] == previous ? n[1] : n[0];
-      if(walked.count(edge_key(current, following)) != 0)
-        break; // back to the start of a loop of degree-2 vertices
-      walked.insert(edge_key(current, following));
-      previous = current;
-      current = following;
+      polyline.pop_back();
+      std::rotate(polyline.begin(), std::min_element(polyline.begin(), polyline.end()), polyline.end());
+      if(polyline.back() < polyline[1])
+        std::reverse(polyline.begin() + 1, polyline.end());
     }
-    return branch;
+    else if(polyline.back() < first || (polyline.back() == first && polyline[polyline.size() - 2] < polyline[1]))
+      std::reverse(polyline.begin(), polyline.end());
+    branch.vertices = std::move(polyline);
+    (branch.closed ? closed : open).push_back(std::move(branch));
+  }
+  auto by_first_two = [](const Skeleton_branch& a, const Skeleton_branch& b) {
+    return std::make_pair(a.vertices[0], a.vertices[1]) < std::make_pair(b.vertices[0], b.vertices[1]);
   };
-
-  std::vector<Skeleton_branch> branches;
-  const std::size_t n = num_vertices(g);
-  for(std::size_t v = 0; v < n; ++v)
-  {
-    if(!is_node(v))
-      continue;
-    for(std::size_t w : neighbours(v))
-      if(walked.count(edge_key(v, w)) == 0)
-        branches.push_back(walk(v, w, true));
-  }
-  // What is left are loops made of vertices of degree 2 only.
-  for(std::size_t v = 0; v < n; ++v)
-  {
-    const std::vector<std::size_t> nv = neighbours(v);
-    if(nv.size() != 2 || walked.count(edge_key(v, nv[0])) != 0)
-      continue;
-    Skeleton_branch loop = walk(v, nv[0], true);
-    loop.closed = true;
-    if(loop.vertices.size() > 1 && loop.vertices.back() == loop.vertices.front())
-      loop.vertices.pop_back();
-    branches.push_back(std::move(loop));
-  }
-  return branches;
+  std::sort(open.begin(), open.end(), by_first_two);
+  std::sort(closed.begin(), closed.end(), by_first_two);
+  open.insert(open.end(), std::make_move_iterator(closed.begin()), std::make_move_iterator(closed.end()));
+  return open;
 }
 
 } // namespace internal

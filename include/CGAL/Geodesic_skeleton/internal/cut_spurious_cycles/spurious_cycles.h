@@ -8,7 +8,6 @@
 
 #include <CGAL/Geodesic_skeleton/Voxelized_surface.h>
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
-#include <CGAL/Geodesic_skeleton/internal/disjoint_sets.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_line_crossings.h>
 #include <CGAL/Geodesic_skeleton/internal/voxelize/mesh_triangles.h>
@@ -18,6 +17,8 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+
+#include <boost/pending/disjoint_sets.hpp>
 
 #include <algorithm>
 #include <array>
@@ -41,23 +42,22 @@ std::size_t capped_genus_sum(const FaceGraph& mesh)
 {
   const auto vim = CGAL::get_initialized_vertex_index_map(mesh);
   const std::size_t n = static_cast<std::size_t>(num_vertices(mesh));
-  Disjoint_sets components(n);
+  boost::disjoint_sets_with_storage<> components(n);
+  auto root = [&](auto v) { return components.find_set(std::size_t(get(vim, v))); };
   for(auto e : edges(mesh))
-    components.unite(get(vim, source(e, mesh)), get(vim, target(e, mesh)));
+    components.union_set(std::size_t(get(vim, source(e, mesh))), std::size_t(get(vim, target(e, mesh))));
   std::vector<long> chi(n, 0); // indexed by a component's root
   for(auto v : vertices(mesh))
-    ++chi[components.find(get(vim, v))];
+    ++chi[root(v)];
   for(auto e : edges(mesh))
-    --chi[components.find(get(vim, source(e, mesh)))];
+    --chi[root(source(e, mesh))];
   for(auto f : faces(mesh))
-    ++chi[components.find(get(vim, target(halfedge(f, mesh), mesh)))];
+    ++chi[root(target(halfedge(f, mesh), mesh))];
   // Holes: cycles of border halfedges, each capped by a disc.
-  for_each_border_cycle(mesh, [&](const auto& cycle) {
-    ++chi[components.find(get(vim, target(cycle.front(), mesh)))];
-  });
+  for_each_border_cycle(mesh, [&](const auto& cycle) { ++chi[root(target(cycle.front(), mesh))]; });
   std::size_t genus = 0;
   for(std::size_t r = 0; r < n; ++r)
-    if(components.find(r) == r && chi[r] < 2)
+    if(components.find_set(r) == r && chi[r] < 2)
       genus += std::size_t((2 - chi[r]) / 2);
   return genus;
 }
@@ -66,17 +66,21 @@ std::size_t capped_genus_sum(const FaceGraph& mesh)
 inline std::pair<std::size_t, std::size_t> components_and_cycles(const Skeleton_adjacency& graph,
                                                                  const std::vector<bool>& removed)
 {
-  Disjoint_sets sets(graph.nodes.size());
-  std::size_t nodes = 0, edges = 0, merges = 0;
-  for(std::size_t v = 0; v < graph.nodes.size(); ++v)
-    nodes += !removed[v];
+  boost::disjoint_sets_with_storage<> sets(graph.nodes.size());
+  std::size_t nodes = 0, edges = 0;
   for(const auto& e : graph.edges)
     if(!removed[std::size_t(e.first)] && !removed[std::size_t(e.second)])
     {
       ++edges;
-      merges += sets.unite(std::size_t(e.first), std::size_t(e.second));
+      sets.union_set(std::size_t(e.first), std::size_t(e.second));
     }
-  const std::size_t components = nodes - merges;
+  std::size_t components = 0;
+  for(std::size_t v = 0; v < graph.nodes.size(); ++v)
+    if(!removed[v])
+    {
+      ++nodes;
+      components += sets.find_set(v) == v;
+    }
   return {components, edges + components - nodes};
 }
 
@@ -274,16 +278,16 @@ std::size_t cut_spurious_cycles_impl(VoxelSet& skeleton, const FaceGraph& mesh, 
   std::vector<std::vector<std::size_t>> trials;
   for(std::size_t v : singles)
     trials.push_back({v});
-  Disjoint_sets runs_of(graph.nodes.size());
+  boost::disjoint_sets_with_storage<> runs_of(graph.nodes.size());
   for(const auto& e : graph.edges)
     if(leaving_steps[std::size_t(e.first)] > 0 && leaving_steps[std::size_t(e.second)] > 0)
-      runs_of.unite(std::size_t(e.first), std::size_t(e.second));
+      runs_of.union_set(std::size_t(e.first), std::size_t(e.second));
   std::vector<std::vector<std::size_t>> runs;
   {
     std::vector<std::size_t> run_index(graph.nodes.size(), std::size_t(-1));
     for(std::size_t v : singles)
     {
-      std::size_t& r = run_index[runs_of.find(v)];
+      std::size_t& r = run_index[runs_of.find_set(v)];
       if(r == std::size_t(-1))
       {
         r = runs.size();

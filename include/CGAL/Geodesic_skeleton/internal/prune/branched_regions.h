@@ -9,14 +9,14 @@
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
 
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/dijkstra_shortest_paths_no_color_map.hpp>
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <functional>
 #include <limits>
-#include <queue>
 #include <tuple>
 #include <unordered_map>
 #include <unordered_set>
@@ -91,49 +91,70 @@ Voxel_key region_centroid(const std::vector<Voxel_key>& region, const Radius& ra
   return best;
 }
 
-// Steps (6) and (7): Dijkstra from the centroid through the region; returns the region
-// voxels that lie on a shortest path to some terminator. Terminators end paths; they are
-// never passed through. Ties are settled in key order, so the paths are deterministic.
+// Steps (6) and (7): Dijkstra from the centroid through the region (Boost.Graph's, on a
+// graph of the region voxels and the terminators with edges out of the region voxels only,
+// so that terminators end paths and are never passed through); returns the region voxels
+// that lie on a shortest path to some terminator. The paths are deterministic: after the
+// search each voxel v takes as predecessor, among its neighbours u that reach it on a
+// shortest path (dist(u) + step(u, v) <= dist(v) + 1e-12), the one with the smallest
+// (dist(u), z, y, x).
 inline Voxel_key_set voxels_on_shortest_paths(const std::vector<Voxel_key>& region,
                                               const Voxel_key_set& terminators,
                                               const Voxel_key& centroid)
 {
-  const Voxel_key_set in_region(region.begin(), region.end());
-  std::unordered_map<Voxel_key, double, Voxel_key_hash> distance;
-  std::unordered_map<Voxel_key, Voxel_key, Voxel_key_hash> predecessor;
-  using Entry = std::tuple<double, int, int, int>; // distance, then z, y, x as tie-break
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-  distance[centroid] = 0;
-  queue.emplace(0.0, centroid.z, centroid.y, centroid.x);
-  while(!queue.empty())
+  // The voxels numbered 0, 1, ...: the region's, then the terminators' in key order.
+  std::vector<Voxel_key> voxels = region;
+  voxels.insert(voxels.end(), terminators.begin(), terminators.end());
+  std::sort(voxels.begin() + std::ptrdiff_t(region.size()), voxels.end());
+  std::unordered_map<Voxel_key, std::size_t, Voxel_key_hash> index_of;
+  for(std::size_t i = 0; i < voxels.size(); ++i)
+    index_of.emplace(voxels[i], i);
+
+  struct Step
   {
-    const auto [d, z, y, x] = queue.top();
-    queue.pop();
-    const Voxel_key k{x, y, z};
-    if(d > distance.at(k) || terminators.count(k) != 0)
-      continue;
+    double length; // voxels
+  };
+  std::vector<std::pair<std::size_t, std::size_t>> steps;
+  std::vector<Step> lengths;
+  for(std::size_t i = 0; i < region.size(); ++i)
     for(const Voxel_key& offset : neighbourhood_26())
     {
-      const Voxel_key n = k + offset;
-      if(in_region.count(n) == 0 && terminators.count(n) == 0)
+      const auto to = index_of.find(voxels[i] + offset);
+      if(to == index_of.end())
         continue;
-      const double nd = d + step_length(k, n);
-      auto it = distance.find(n);
-      if(it == distance.end() || nd < it->second - 1e-12)
-      {
-        distance[n] = nd;
-        predecessor[n] = k;
-        queue.emplace(nd, n.z, n.y, n.x);
-      }
+      steps.emplace_back(i, to->second);
+      lengths.push_back(Step{step_length(voxels[i], to->first)});
     }
+  // An adjacency list, not a compressed_sparse_row_graph: the latter's boost::detail::get
+  // hides the property map get() that boost/pending/disjoint_sets.hpp needs when it is
+  // included after it.
+  using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS, boost::no_property, Step>;
+  const Graph graph(steps.begin(), steps.end(), lengths.begin(), voxels.size());
+  std::vector<double> distance(voxels.size());
+  boost::dijkstra_shortest_paths_no_color_map(
+      graph, index_of.at(centroid),
+      boost::distance_map(distance.data()).weight_map(get(&Step::length, graph)));
+
+  const double unreached = std::numeric_limits<double>::max(); // Boost's default "infinity"
+  const std::size_t none = std::size_t(-1);
+  std::vector<std::size_t> predecessor(voxels.size(), none);
+  auto tie_key = [&](std::size_t u) {
+    return std::make_tuple(distance[u], voxels[u].z, voxels[u].y, voxels[u].x);
+  };
+  for(std::size_t e = 0; e < steps.size(); ++e)
+  {
+    const auto [u, v] = steps[e];
+    if(distance[u] < unreached && distance[u] + lengths[e].length <= distance[v] + 1e-12 &&
+       (predecessor[v] == none || tie_key(u) < tie_key(predecessor[v])))
+      predecessor[v] = u;
   }
 
   Voxel_key_set on_path{centroid};
-  for(const Voxel_key& t : terminators)
+  for(std::size_t t = region.size(); t < voxels.size(); ++t)
   {
-    if(predecessor.count(t) == 0)
+    if(predecessor[t] == none)
       continue; // cannot happen: every terminator touches the connected region
-    for(Voxel_key k = predecessor.at(t); on_path.insert(k).second; k = predecessor.at(k))
+    for(std::size_t k = predecessor[t]; on_path.insert(voxels[k]).second; k = predecessor[k])
     {
     }
   }

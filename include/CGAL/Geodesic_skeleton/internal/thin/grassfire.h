@@ -207,8 +207,10 @@ inline std::vector<std::uint32_t> sorted_by_distance(const std::vector<std::uint
   return order;
 }
 
-// The squared distances of `field` over `layout` (0 outside the field's box), row by row.
-inline std::vector<std::uint32_t> distances_over(const Voxel_distance_field& field, const Grid_layout& layout)
+// The squared distances of `field` (a model of VoxelDistanceField) over `layout` (0
+// outside the field's box), row by row.
+template <typename VoxelDistanceField>
+std::vector<std::uint32_t> distances_over(const VoxelDistanceField& field, const Grid_layout& layout)
 {
   std::vector<std::uint32_t> out(layout.volume(), 0u);
   const Voxel_box& from = field.box();

@@ -41,7 +41,8 @@ namespace internal {
 class Nearest_node_inside
 {
 public:
-  Nearest_node_inside(const Voxel_distance_field& distances, const std::vector<Voxel_key>& nodes)
+  template <typename VoxelDistanceField>
+  Nearest_node_inside(const VoxelDistanceField& distances, const std::vector<Voxel_key>& nodes)
     : m_layout(distances.box().grown(1))
   {
     // Over the field's box grown by one voxel, so that the wave needs no bounds check:
@@ -158,9 +159,9 @@ std::vector<Voxel_frame::Vector> skeleton_points_inside(const std::vector<Voxel_
 // to_graph() with its inside tests against `mesh_lines` (a callable returning the mesh's
 // Grid_line_crossings in the frame of the skeleton).
 // The graph's vertices are written through `maps` (Curve_skeleton_output_maps).
-template <typename VoxelSet, typename FaceGraph, typename Graph, typename VertexPointMap, typename OutputMaps,
-          typename MeshLines>
-void to_graph_impl(const VoxelSet& skeleton, const Voxel_distance_field& distances, const FaceGraph& mesh,
+template <typename VoxelSet, typename VoxelDistanceField, typename FaceGraph, typename Graph, typename VertexPointMap,
+          typename OutputMaps, typename MeshLines>
+void to_graph_impl(const VoxelSet& skeleton, const VoxelDistanceField& distances, const FaceGraph& mesh,
                    Graph& graph, VertexPointMap vpm, const OutputMaps& maps, double memory_limit,
                    MeshLines& mesh_lines)
 {

@@ -9,11 +9,12 @@
 // of the others can leave the solid without losing a thin part (see voxelize()'s doc).
 
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
-#include <CGAL/Geodesic_skeleton/internal/disjoint_sets.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_line_crossings.h>
 #include <CGAL/Geodesic_skeleton/internal/voxelize/principal_frame.h>
 #include <CGAL/Geodesic_skeleton/internal/thin/simple_point.h>
+
+#include <boost/pending/disjoint_sets.hpp>
 
 #include <algorithm>
 #include <array>
@@ -353,7 +354,7 @@ inline void peel_surface_voxels(const std::vector<std::array<Vec3, 3>>& g, const
   //    for the near candidates reached by the linking search, the voxel they came from.
   const std::uint32_t none = std::uint32_t(-1);
   std::vector<std::uint32_t> owner(volume, none);
-  Disjoint_sets components;
+  std::uint32_t component_count = 0;
   auto kept_label = [](std::uint8_t l) { return l == CORE || l == FAR || l == NEAR_1 || l == NEAR_2 || l == CORE_SURFACE; };
   // Only components that touch a near candidate matter; grow those from the near ones.
   for(std::uint32_t i : near)
@@ -362,7 +363,7 @@ inline void peel_surface_voxels(const std::vector<std::array<Vec3, 3>>& g, const
       const std::size_t start_voxel = std::size_t(std::ptrdiff_t(i) + o);
       if(!kept_label(labels[start_voxel]) || owner[start_voxel] != none)
         continue;
-      const std::uint32_t id = std::uint32_t(components.add());
+      const std::uint32_t id = component_count++;
       owner[start_voxel] = id;
       stack.push_back(std::uint32_t(start_voxel));
       while(!stack.empty())
@@ -388,6 +389,14 @@ inline void peel_surface_voxels(const std::vector<std::array<Vec3, 3>>& g, const
     std::uint32_t length, a, b; // a, b: the two meeting voxels (a == b for one voxel)
   };
   std::vector<Link> links;
+  boost::disjoint_sets_with_storage<> components(component_count);
+  // Joins two components; false when they were one already.
+  auto unite = [&](std::uint32_t a, std::uint32_t b) {
+    const std::size_t root_a = components.find_set(a), root_b = components.find_set(b);
+    if(root_a != root_b)
+      components.link(root_a, root_b);
+    return root_a != root_b;
+  };
   auto origin = [&](std::uint32_t v) { // the component a visited near voxel came from
     while(labels[v] >= VISITED || labels[v] == KEEP)
       v = owner[v];
@@ -459,17 +468,17 @@ inline void peel_surface_voxels(const std::vector<std::array<Vec3, 3>>& g, const
         if(!kept_label(labels[j]))
           continue;
         if(root == none)
-          root = std::uint32_t(components.find(owner[j]));
-        else if(components.unite(root, owner[j]))
+          root = std::uint32_t(components.find_set(owner[j]));
+        else if(unite(root, owner[j]))
         {
-          root = std::uint32_t(components.find(root));
+          root = std::uint32_t(components.find_set(root));
           keep_path(link.a);
         }
       }
       continue;
     }
     const std::uint32_t ca = origin(link.a), cb = origin(link.b);
-    if(components.unite(ca, cb))
+    if(unite(ca, cb))
     {
       keep_path(link.a);
       keep_path(link.b);
