@@ -97,7 +97,7 @@ std::vector<Voxel_key> square_loop()
 
 std::size_t components_of(const std::set<Voxel_key>& voxels)
 {
-  return gs::internal::components_26(std::vector<Voxel_key>(voxels.begin(), voxels.end())).size();
+  return gs::internal::voxel_components(std::vector<Voxel_key>(voxels.begin(), voxels.end())).size();
 }
 
 } // namespace

@@ -11,6 +11,7 @@
 #include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
+#include <CGAL/Geodesic_skeleton/internal/voxel_components.h>
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
@@ -34,53 +35,6 @@ struct Small_pieces_report
 };
 
 namespace internal {
-
-// The 26-connected components of a voxel set: a label per voxel of `keys` (in that order)
-// and the number of components, by a search through the set's own membership test.
-template <typename VoxelSet>
-std::size_t voxel_components(const VoxelSet& voxels, const std::vector<Voxel_key>& keys,
-                             std::vector<std::size_t>& label)
-{
-  std::vector<std::size_t> order(keys.size());
-  for(std::size_t i = 0; i < keys.size(); ++i)
-    order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return keys[a] < keys[b]; });
-  auto position = [&](const Voxel_key& k) {
-    const auto it = std::lower_bound(order.begin(), order.end(), k,
-                                     [&](std::size_t i, const Voxel_key& key) { return keys[i] < key; });
-    return *it;
-  };
-  const std::size_t none = std::size_t(-1);
-  label.assign(keys.size(), none);
-  std::size_t components = 0;
-  std::vector<std::size_t> stack;
-  for(std::size_t start = 0; start < keys.size(); ++start)
-  {
-    if(label[start] != none)
-      continue;
-    label[start] = components;
-    stack.push_back(start);
-    while(!stack.empty())
-    {
-      const std::size_t i = stack.back();
-      stack.pop_back();
-      for(const Voxel_key& o : neighbourhood_26())
-      {
-        const Voxel_key n = keys[i] + o;
-        if(!voxels.contains(n))
-          continue;
-        const std::size_t j = position(n);
-        if(label[j] == none)
-        {
-          label[j] = components;
-          stack.push_back(j);
-        }
-      }
-    }
-    ++components;
-  }
-  return components;
-}
 
 // The number of voxels of the solid of `distances` (its non-zero voxels) in the
 // 26-connected component of each seed, by a search from each seed not yet reached.
@@ -180,7 +134,7 @@ Small_pieces_report remove_small_pieces(VoxelSet& skeleton, const VoxelDistanceF
   keys.reserve(skeleton.size());
   skeleton.for_each([&](const Voxel_key& k) { keys.push_back(k); });
   std::vector<std::size_t> piece_of;
-  report.pieces = internal::voxel_components(skeleton, keys, piece_of);
+  report.pieces = internal::voxel_components(keys, [&](const Voxel_key& k) { return skeleton.contains(k); }, piece_of);
   if(report.pieces <= 1 || fraction == 0)
     return report;
 

@@ -8,6 +8,7 @@
 
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
+#include <CGAL/Geodesic_skeleton/internal/voxel_components.h>
 
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/dijkstra_shortest_paths_no_color_map.hpp>
@@ -33,31 +34,6 @@ inline double step_length(const Voxel_key& a, const Voxel_key& b)
 {
   static const double length[4] = {0.0, 1.0, std::sqrt(2.0), std::sqrt(3.0)};
   return length[(a.x != b.x) + (a.y != b.y) + (a.z != b.z)];
-}
-
-// The 26-connected components of `points`, each sorted by key (deterministic).
-inline std::vector<std::vector<Voxel_key>> components_26(const std::vector<Voxel_key>& points)
-{
-  Voxel_key_set unvisited(points.begin(), points.end());
-  std::vector<Voxel_key> sorted = points;
-  std::sort(sorted.begin(), sorted.end());
-  std::vector<std::vector<Voxel_key>> components;
-  for(const Voxel_key& seed : sorted)
-  {
-    if(unvisited.erase(seed) == 0)
-      continue;
-    std::vector<Voxel_key> component{seed};
-    for(std::size_t i = 0; i < component.size(); ++i)
-      for(const Voxel_key& offset : neighbourhood_26())
-      {
-        const Voxel_key n = component[i] + offset;
-        if(unvisited.erase(n) != 0)
-          component.push_back(n);
-      }
-    std::sort(component.begin(), component.end());
-    components.push_back(std::move(component));
-  }
-  return components;
 }
 
 // Step (5): the region voxel nearest the mean of the region, ties broken by the largest
@@ -179,7 +155,7 @@ Branched_region_pruning prune_branched_regions(VoxelSet& skeleton, const Radius&
 
   Branched_region_pruning result;
   std::vector<Voxel_key> to_remove;
-  for(const std::vector<Voxel_key>& region : components_26(branched))
+  for(const std::vector<Voxel_key>& region : voxel_components(branched))
   {
     ++result.regions;
     const Voxel_key_set in_region(region.begin(), region.end());

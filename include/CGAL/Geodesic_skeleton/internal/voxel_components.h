@@ -1,0 +1,89 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_GEODESIC_SKELETON_INTERNAL_VOXEL_COMPONENTS_H
+#define CGAL_GEODESIC_SKELETON_INTERNAL_VOXEL_COMPONENTS_H
+
+// The package's one search for the 26-connected components of a list of voxels
+// (remove_small_pieces(), the branched regions of prune_skeleton()).
+
+#include <CGAL/Geodesic_skeleton/Voxel_key.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Geodesic_skeleton {
+namespace internal {
+
+// The 26-connected components of the voxels `keys` (each listed once): a label per key, in
+// that order, and the number of components. Labels are numbered in the order of each
+// component's first key in `keys`. `contains(k)` tells whether voxel `k` is one of `keys`
+// (a set's own membership test, often faster than a search of `keys`).
+//
+// Complexity: O(K log K) for K keys.
+template <typename Contains>
+std::size_t voxel_components(const std::vector<Voxel_key>& keys, const Contains& contains,
+                             std::vector<std::size_t>& label)
+{
+  std::vector<std::size_t> order(keys.size());
+  for(std::size_t i = 0; i < keys.size(); ++i)
+    order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return keys[a] < keys[b]; });
+  auto position = [&](const Voxel_key& k) {
+    const auto it = std::lower_bound(order.begin(), order.end(), k,
+                                     [&](std::size_t i, const Voxel_key& key) { return keys[i] < key; });
+    return *it;
+  };
+  const std::size_t none = std::size_t(-1);
+  label.assign(keys.size(), none);
+  std::size_t components = 0;
+  std::vector<std::size_t> stack;
+  for(std::size_t start = 0; start < keys.size(); ++start)
+  {
+    if(label[start] != none)
+      continue;
+    label[start] = components;
+    stack.push_back(start);
+    while(!stack.empty())
+    {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      for(const Voxel_key& o : neighbourhood_26())
+      {
+        const Voxel_key n = keys[i] + o;
+        if(!contains(n))
+          continue;
+        const std::size_t j = position(n);
+        if(label[j] == none)
+        {
+          label[j] = components;
+          stack.push_back(j);
+        }
+      }
+    }
+    ++components;
+  }
+  return components;
+}
+
+// The 26-connected components of `points`, each sorted by key, listed in the order of
+// their smallest keys (deterministic).
+inline std::vector<std::vector<Voxel_key>> voxel_components(std::vector<Voxel_key> points)
+{
+  std::sort(points.begin(), points.end());
+  std::vector<std::size_t> label;
+  const std::size_t count = voxel_components(
+      points, [&](const Voxel_key& k) { return std::binary_search(points.begin(), points.end(), k); }, label);
+  std::vector<std::vector<Voxel_key>> components(count);
+  for(std::size_t i = 0; i < points.size(); ++i)
+    components[label[i]].push_back(points[i]); // in key order, as `points` is sorted
+  return components;
+}
+
+} // namespace internal
+} // namespace Geodesic_skeleton
+} // namespace CGAL
+
+#endif // CGAL_GEODESIC_SKELETON_INTERNAL_VOXEL_COMPONENTS_H
