@@ -125,7 +125,8 @@ Pruning_counts pruning_counts(const Mesh& mesh, int resolution)
   const auto radius = gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(distances));
   gs::Sparse_voxel_set algorithm_1 = skeleton;
   const gs::Pruning_report report_1 =
-      gs::prune_skeleton(algorithm_1, gs::parameters::combine(radius, gs::parameters::spur_length_factor(0.0)));
+      gs::prune_skeleton(algorithm_1, gs::parameters::combine(radius, gs::parameters::spur_length_factor(0.0),
+                                                              gs::parameters::limb_protrusion_factor(0.0)));
   c.algorithm_1_removed = c.before - algorithm_1.size();
   c.regions = report_1.branched_regions;
   c.algorithm_1_branched = gs::count_skeleton_points(algorithm_1).branched_connection;

@@ -72,10 +72,12 @@ struct Options
   int resolution = gs::default_voxel_resolution;
   double small_piece_fraction = ranges::small_piece_fraction.default_value;
   double spur_length_factor = ranges::spur_length_factor.default_value;
+  double limb_protrusion_factor = ranges::limb_protrusion_factor.default_value;
   int smoothing_window = static_cast<int>(ranges::smoothing_window.default_value);
   double bend_threshold = ranges::bend_threshold.default_value;
   double straightness_tolerance = ranges::straightness_tolerance.default_value;
   double minimum_bone_length_factor = ranges::minimum_bone_length_factor.default_value;
+  double maximum_bone_length_factor = ranges::maximum_bone_length_factor.default_value;
   std::size_t reeb_intervals = static_cast<std::size_t>(ranges::number_of_reeb_intervals.default_value);
   bool fill_holes = true;
   bool keep_surface_voxels = true;
@@ -100,10 +102,14 @@ const Numeric_option numeric_options[] = {
     {"--small-pieces", "F", ranges::small_piece_fraction,
      "drop detached pieces smaller than F times the largest (0 keeps all)"},
     {"--spur-length", "F", ranges::spur_length_factor, "snip end branches shorter than F MAT radii"},
+    {"--limb-protrusion", "F", ranges::limb_protrusion_factor,
+     "level of detail: snip end branches reaching less than F largest MAT radii out of their junction"},
     {"--smoothing-window", "W", ranges::smoothing_window, "points averaged along branches"},
     {"--bend-threshold", "T", ranges::bend_threshold, "chord-to-point accumulation that makes a joint"},
     {"--straightness", "S", ranges::straightness_tolerance, "allowed bone deviation in MAT radii"},
     {"--min-bone-length", "F", ranges::minimum_bone_length_factor, "shortest bone in MAT radii"},
+    {"--max-bone-length", "F", ranges::maximum_bone_length_factor,
+     "longest straight bone in MAT radii, cut at its narrowings (0: no limit)"},
     {"--reeb-intervals", "N", ranges::number_of_reeb_intervals, "intervals of the Reeb graph reported for comparison"},
     {"--max-bones", "K", ranges::max_bones_per_vertex, "skinning: bones that may influence one vertex"},
     {"--falloff", "P", ranges::falloff, "skinning: exponent of the inverse-distance weights"},
@@ -220,10 +226,12 @@ Options parse_options(int argc, char** argv)
     else if(a == "--peel-surface-voxels") o.keep_surface_voxels = false;
     else if(a == "--small-pieces") o.small_piece_fraction = parse_number<double>(a, value());
     else if(a == "--spur-length") o.spur_length_factor = parse_number<double>(a, value());
+    else if(a == "--limb-protrusion") o.limb_protrusion_factor = parse_number<double>(a, value());
     else if(a == "--smoothing-window") o.smoothing_window = parse_number<int>(a, value());
     else if(a == "--bend-threshold") o.bend_threshold = parse_number<double>(a, value());
     else if(a == "--straightness") o.straightness_tolerance = parse_number<double>(a, value());
     else if(a == "--min-bone-length") o.minimum_bone_length_factor = parse_number<double>(a, value());
+    else if(a == "--max-bone-length") o.maximum_bone_length_factor = parse_number<double>(a, value());
     else if(a == "--reeb-intervals") o.reeb_intervals = parse_number<std::size_t>(a, value());
     else if(a == "--skeleton") o.skeleton = value();
     else if(a == "--weights") o.weights = true;
@@ -484,9 +492,11 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
     const auto np = params::combine(
         params::resolution(o.resolution), params::fill_holes(o.fill_holes),
         params::keep_surface_voxels(o.keep_surface_voxels), params::small_piece_fraction(o.small_piece_fraction),
-        params::spur_length_factor(o.spur_length_factor), params::smoothing_window(o.smoothing_window),
+        params::spur_length_factor(o.spur_length_factor),
+        params::limb_protrusion_factor(o.limb_protrusion_factor), params::smoothing_window(o.smoothing_window),
         params::bend_threshold(o.bend_threshold), params::straightness_tolerance(o.straightness_tolerance),
         params::minimum_bone_length_factor(o.minimum_bone_length_factor),
+        params::maximum_bone_length_factor(o.maximum_bone_length_factor),
         params::number_of_reeb_intervals(o.reeb_intervals), params::curve_skeleton_output(&curve),
         params::thinned_skeleton_output(thinned_graph ? &thinned : nullptr),
         params::reeb_graph_output(o.reeb_graph ? &reeb : nullptr));
@@ -548,10 +558,12 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
                         {"keep_surface_voxels", o.keep_surface_voxels},
                         {"small_piece_fraction", o.small_piece_fraction},
                         {"spur_length_factor", o.spur_length_factor},
+                        {"limb_protrusion_factor", o.limb_protrusion_factor},
                         {"smoothing_window", o.smoothing_window},
                         {"bend_threshold", o.bend_threshold},
                         {"straightness_tolerance", o.straightness_tolerance},
                         {"minimum_bone_length_factor", o.minimum_bone_length_factor},
+                        {"maximum_bone_length_factor", o.maximum_bone_length_factor},
                         {"reeb_intervals", o.reeb_intervals}, {"voxel_size", report.voxel_size}}},
         {"computed", computed},
         {"timings_ms", timings},

@@ -88,12 +88,16 @@ Skeleton chain_skeleton(const std::vector<Point>& points, double radius)
   return s;
 }
 
-Control bones_of(const Skeleton& s)
+template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Control bones_of(const Skeleton& s, const NamedParameters& np = CGAL::parameters::default_values())
 {
   Control control;
-  gs::split_into_bones(s, control);
+  gs::split_into_bones(s, control, np);
   return control;
 }
+
+// The paper's split alone, without the package's cut of long straight bones.
+const auto paper_split = gs::parameters::maximum_bone_length_factor(0.0);
 
 std::vector<double> accumulation(const std::vector<Point>& points, double L, bool closed = false)
 {
@@ -350,16 +354,73 @@ BOOST_AUTO_TEST_CASE(accumulation_rejects_bad_chords)
 
 BOOST_AUTO_TEST_CASE(a_straight_tube_gives_one_bone)
 {
-  const Control c = bones_of(chain_skeleton(polyline({Point(0, 0, 0), Point(0, 0, 30)}, 0.5), 2.0));
+  const Control c = bones_of(chain_skeleton(polyline({Point(0, 0, 0), Point(0, 0, 30)}, 0.5), 2.0), paper_split);
   BOOST_TEST(num_edges(c) == 1u);
   BOOST_TEST(num_vertices(c) == 2u);
   check_tree(c);
+  // Up to the longest bone (3 largest radii by default), a straight tube stays one bone.
+  BOOST_TEST(num_edges(bones_of(chain_skeleton(polyline({Point(0, 0, 0), Point(0, 0, 30)}, 0.5), 12.0))) == 1u);
+}
+
+// A straight limb has no bend for the accumulation, yet an animator wants an elbow and a
+// wrist: a straight part longer than maximum_bone_length_factor times the largest radius is
+// cut into bones of about equal length, at the narrowings near the equal-length positions.
+BOOST_AUTO_TEST_CASE(a_long_straight_limb_is_cut_at_its_narrowings)
+{
+  // 45 long, radius 5: 45 / (3 x 5) gives 3 bones, cut near z = 15 and z = 30.
+  const std::vector<Point> limb = polyline({Point(0, 0, 0), Point(0, 0, 45)}, 0.5);
+  const Control even = bones_of(chain_skeleton(limb, 5.0));
+  BOOST_TEST(num_edges(even) == 3u);
+  check_tree(even);
+  for(const auto bone : boost::make_iterator_range(edges(even)))
+  {
+    BOOST_TEST(even[bone].length >= 15.0 * 0.75);
+    BOOST_TEST(even[bone].length <= 15.0 * 1.25);
+  }
+
+  // Narrowings at z = 17.5 (an elbow) and z = 27.5 (a wrist): the cuts go there.
+  Skeleton narrowed;
+  const std::vector<std::size_t> ids = add_chain(narrowed, limb, 5.0);
+  for(std::size_t id : ids)
+  {
+    const double z = narrowed[id].point.z();
+    if(std::abs(z - 17.5) < 0.01 || std::abs(z - 27.5) < 0.01)
+      narrowed[id].radius = 4.0;
+  }
+  const Control cut = bones_of(narrowed);
+  BOOST_TEST(num_edges(cut) == 3u);
+  std::vector<double> bend_heights;
+  for(const auto& j : test::joints(cut))
+    if(j.kind == gs::Joint_kind::bend || j.kind == gs::Joint_kind::root)
+      if(j.point.z() > 1 && j.point.z() < 44)
+        bend_heights.push_back(j.point.z());
+  std::sort(bend_heights.begin(), bend_heights.end());
+  BOOST_REQUIRE(bend_heights.size() == 2u);
+  BOOST_TEST(bend_heights[0] == 17.5, boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(bend_heights[1] == 27.5, boost::test_tools::tolerance(1e-9));
+
+  // The paper's split alone keeps it whole, and the longest bone follows the factor.
+  BOOST_TEST(num_edges(bones_of(chain_skeleton(limb, 5.0), paper_split)) == 1u);
+  BOOST_TEST(num_edges(bones_of(chain_skeleton(limb, 5.0), gs::parameters::maximum_bone_length_factor(4.5))) == 2u);
+
+  // A thin limb on a thick body is measured in the body's radius: a limb of radius 1 and 44
+  // long, hanging from a trunk of radius 5, gets 3 bones, not 44 / 3 = 15 (capped to 4).
+  Skeleton body;
+  const auto trunk = add_chain(body, polyline({Point(-20, 0, -0.5), Point(20, 0, -0.5)}, 0.5), 5.0);
+  add_chain(body, polyline({Point(0, 0, 0), Point(0, 0, 44)}, 0.5), 1.0, long(trunk[40]));
+  const Control thin_limb = bones_of(body);
+  std::size_t limb_bones = 0;
+  for(const auto bone : boost::make_iterator_range(edges(thin_limb)))
+    limb_bones +=
+        thin_limb[target(bone, thin_limb)].point.z() > 0.25 || thin_limb[source(bone, thin_limb)].point.z() > 0.25;
+  BOOST_TEST(limb_bones == 3u);
 }
 
 BOOST_AUTO_TEST_CASE(an_l_shaped_tube_gives_two_bones_with_the_joint_at_the_corner)
 {
   const double radius = 1.5;
-  const Control c = bones_of(chain_skeleton(polyline({Point(0, 0, 0), Point(20, 0, 0), Point(20, 20, 0)}, 0.5), radius));
+  const Control c =
+      bones_of(chain_skeleton(polyline({Point(0, 0, 0), Point(20, 0, 0), Point(20, 20, 0)}, 0.5), radius), paper_split);
   BOOST_REQUIRE(num_edges(c) == 2u);
   check_tree(c);
   bool corner_found = false;
@@ -376,7 +437,7 @@ BOOST_AUTO_TEST_CASE(a_zigzag_of_k_straight_parts_gives_k_bones)
     std::vector<Point> corners;
     for(int i = 0; i <= k; ++i)
       corners.emplace_back(12.0 * i, (i % 2) ? 9.0 : 0.0, 0);
-    const Control c = bones_of(chain_skeleton(polyline(corners, 0.4), 1.0));
+    const Control c = bones_of(chain_skeleton(polyline(corners, 0.4), 1.0), paper_split);
     BOOST_TEST(num_edges(c) == std::size_t(k), "zigzag of " << k << " parts");
     check_tree(c);
   }
@@ -390,7 +451,7 @@ BOOST_AUTO_TEST_CASE(noise_on_a_straight_tube_adds_no_joint)
     noisy.emplace_back(p.x(), p.y() + rng.get_double(-0.3, 0.3), p.z() + rng.get_double(-0.3, 0.3));
   Skeleton s = chain_skeleton(noisy, 2.0);
   gs::smooth_skeleton(s);
-  const Control c = bones_of(s);
+  const Control c = bones_of(s, paper_split);
   BOOST_TEST(num_edges(c) == 1u);
 }
 
@@ -401,7 +462,7 @@ BOOST_AUTO_TEST_CASE(a_star_is_rooted_at_its_junction)
   add_chain(s, polyline({Point(-0.5, 0, 0), Point(-15, 0, 0)}, 0.5), 1.0, long(arm[0]));
   add_chain(s, polyline({Point(0, 0.5, 0), Point(0, 15, 0)}, 0.5), 1.0, long(arm[0]));
   s[arm[0]].radius = 3.0;
-  const Control c = bones_of(s);
+  const Control c = bones_of(s, paper_split);
   check_tree(c);
   BOOST_REQUIRE(c[boost::graph_bundle].roots.size() == 1u);
   const auto& root = c[c[boost::graph_bundle].roots[0]];
@@ -444,6 +505,7 @@ BOOST_AUTO_TEST_CASE(bad_parameters_throw)
   Control c;
   BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::bend_threshold(-0.1)), std::invalid_argument);
   BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::straightness_tolerance(std::nan(""))), std::invalid_argument);
+  BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::maximum_bone_length_factor(-1.0)), std::invalid_argument);
   BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::chord_length_factors(std::vector<double>{})),
                     std::invalid_argument);
   BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::minimum_bone_length_factor(-1.0)), std::invalid_argument);

@@ -90,6 +90,40 @@ BOOST_AUTO_TEST_CASE(demo_animals_give_one_tree_of_a_rig_s_size_inside_the_mesh)
   }
 }
 
+// The resolution is a sampling choice, not a modelling one (issue 12): doubling it must not
+// add a quarter more joints to a character's rig. Without the level-of-detail snipping
+// (limb_protrusion_factor 0) the cow goes from 33 joints to 46, the armadillo from 43 to 60.
+BOOST_AUTO_TEST_CASE(a_rig_keeps_its_size_when_the_resolution_doubles)
+{
+  for(const char* name : {"cow.off", "dino.off", "armadillo.off", "man.off"})
+  {
+    BOOST_TEST_CONTEXT(name)
+    {
+      const Mesh mesh = test::demo_mesh<Mesh>(name);
+      Control at_64, at_128;
+      gs::extract_control_skeleton(mesh, at_64, gs::parameters::resolution(64));
+      gs::extract_control_skeleton(mesh, at_128, gs::parameters::resolution(128));
+      const double ratio = double(num_vertices(at_128)) / double(num_vertices(at_64));
+      BOOST_TEST(ratio >= 0.75);
+      BOOST_TEST(ratio <= 1.25);
+    }
+  }
+}
+
+// The elephant's ears are thin flaps: thinning leaves a bush of rim branches in each, which
+// the level of detail snips down to one chain per ear, so the rig has an end per leg, the
+// trunk and the ears, not 15 ends of which most are in the ears.
+BOOST_AUTO_TEST_CASE(the_elephant_gets_five_to_twelve_end_points)
+{
+  const Mesh mesh = test::demo_mesh<Mesh>("elephant.off");
+  Control rig, every_branch;
+  gs::extract_control_skeleton(mesh, rig);
+  BOOST_TEST(joints_of_kind(rig, gs::Joint_kind::end) >= 5u);
+  BOOST_TEST(joints_of_kind(rig, gs::Joint_kind::end) <= 12u);
+  gs::extract_control_skeleton(mesh, every_branch, gs::parameters::limb_protrusion_factor(0.0));
+  BOOST_TEST(joints_of_kind(every_branch, gs::Joint_kind::end) > 12u);
+}
+
 // In a limb thinner than a couple of voxels, smoothing can take a curve-skeleton point out
 // of the mesh (up to 1.2 % of the diagonal in the elephant's trunk and the cow's legs); the
 // chain moves such points back in before the split, so that every point of the curve

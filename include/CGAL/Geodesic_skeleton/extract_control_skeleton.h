@@ -135,6 +135,10 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
                     choose_parameter(get_parameter(np, internal_np::spur_length_factor_tag),
                                      ranges::spur_length_factor.default_value),
                     caller);
+  checked_parameter(ranges::limb_protrusion_factor,
+                    choose_parameter(get_parameter(np, internal_np::limb_protrusion_factor_tag),
+                                     ranges::limb_protrusion_factor.default_value),
+                    caller);
   checked_parameter(ranges::smoothing_window,
                     choose_parameter(get_parameter(np, internal_np::smoothing_window_tag),
                                      static_cast<int>(ranges::smoothing_window.default_value)),
@@ -211,12 +215,17 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{1.2}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{limb_protrusion_factor}
+///     \cgalParamDescription{the setting of `prune_skeleton()`: the rig's level of detail}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{0.75}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{smoothing_window}
 ///     \cgalParamDescription{the setting of `smooth_skeleton()`}
 ///     \cgalParamType{`int`}
 ///     \cgalParamDefault{5}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{bend_threshold, straightness_tolerance, minimum_bone_length_factor, chord_length_factors}
+///   \cgalParamNBegin{bend_threshold, straightness_tolerance, minimum_bone_length_factor, maximum_bone_length_factor, chord_length_factors}
 ///     \cgalParamDescription{the settings of `split_into_bones()`}
 ///     \cgalParamType{as for `split_into_bones()`}
 ///     \cgalParamDefault{as for `split_into_bones()`}

@@ -64,6 +64,10 @@ inline constexpr Parameter_range memory_limit{"memory_limit", 1, std::numeric_li
                                               2147483648., false, false};
 /// `prune_skeleton()`: end branches shorter than this many MAT radii are snipped.
 inline constexpr Parameter_range spur_length_factor{"spur_length_factor", 0, 100, 1.2, false, false};
+/// `prune_skeleton()`: end branches whose MAT balls reach out of their junction's ball by
+/// less than this many times the largest MAT radius of their piece are snipped (the rig's
+/// level of detail; 0 keeps them).
+inline constexpr Parameter_range limb_protrusion_factor{"limb_protrusion_factor", 0, 100, 0.75, false, false};
 /// `smooth_skeleton()`: points averaged along the branches.
 inline constexpr Parameter_range smoothing_window{"smoothing_window", 1, 1001, 5, true, true};
 /// `split_into_bones()`: the chord-to-point accumulation that makes a bend joint.
@@ -72,6 +76,10 @@ inline constexpr Parameter_range bend_threshold{"bend_threshold", 0, 1, 0.08, fa
 inline constexpr Parameter_range straightness_tolerance{"straightness_tolerance", 0, 100, 0.5, false, false};
 /// `split_into_bones()`: the shortest bone, in MAT radii.
 inline constexpr Parameter_range minimum_bone_length_factor{"minimum_bone_length_factor", 0, 1000, 2.0,
+                                                            false, false};
+/// `split_into_bones()`: a straight bone longer than this many times the largest MAT radius
+/// of its piece is cut into equal bones at its narrowings (0: no limit).
+inline constexpr Parameter_range maximum_bone_length_factor{"maximum_bone_length_factor", 0, 1000, 3.0,
                                                             false, false};
 /// `split_into_bones()`: each chord length, in mean MAT radii (defaults: 3 and 6).
 inline constexpr Parameter_range chord_length_factor{"chord_length_factors", 1e-3, 1000, 3.0, false, false};

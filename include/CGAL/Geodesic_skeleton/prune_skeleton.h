@@ -43,10 +43,15 @@ struct Pruning_report
 ///
 /// Algorithm 1 keeps, in each branched region (a 26-connected group of branched connection
 /// points), only the voxels on the shortest paths inside the skeleton from the region's
-/// centroid to its terminators. The snipping removes an end branch shorter than
-/// `spur_length_factor` times the MAT radius at its junction, shortest first, while the
-/// skeleton goes on past the junction. The steps are described in the manual, section
-/// \ref manual_prune_method.
+/// centroid to its terminators. The snipping removes an end branch that is shorter than
+/// `spur_length_factor` times the MAT radius at its junction, or whose MAT balls reach out
+/// of its junction's ball by less than `limb_protrusion_factor` times the largest MAT
+/// radius of its piece of the skeleton (a bump, a hoof's cleft, a sheet's rim: detail
+/// smaller than the level of detail of the rig), most spurious first, while the skeleton
+/// goes on past the junction. An end branch is traced through any lump of branched points
+/// that only two branches leave. Both thresholds are ratios of lengths of the shape, so
+/// that the same features are kept at every resolution that resolves them. The steps are
+/// described in the manual, section \ref manual_prune_method.
 ///
 /// The result is deterministic (it does not depend on the set's iteration order).
 /// Pruning never disconnects a component (every terminator stays linked to its
@@ -75,14 +80,24 @@ struct Pruning_report
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{1.2}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{limb_protrusion_factor}
+///     \cgalParamDescription{the level of detail of the snipping: how far, in units of the
+///                           largest MAT radius of its piece of the skeleton, the MAT balls of
+///                           an end branch must reach out of its junction's ball for the
+///                           branch to stay, in [0, 100]; 0 turns this test off (package
+///                           parameter)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{0.75}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \returns what was removed, and how many rounds of snipping were made.
-/// \throws std::invalid_argument when `spur_length_factor` is out of range or a radius is
-///         negative or not finite.
+/// \throws std::invalid_argument when `spur_length_factor` or `limb_protrusion_factor` is
+///         out of range or a radius is negative or not finite.
 ///
 /// \b Complexity: O(N log N) for N skeleton voxels per round of snipping (one Dijkstra per
-/// region, over the region), a few rounds in practice.
+/// region, over the region; each end branch traced and its protrusion measured once), a
+/// few rounds in practice.
 template <typename VoxelSet, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Pruning_report prune_skeleton(VoxelSet& skeleton,
                               const NamedParameters& np = CGAL::parameters::default_values())
@@ -94,6 +109,11 @@ Pruning_report prune_skeleton(VoxelSet& skeleton,
       parameter_ranges::spur_length_factor,
       choose_parameter(get_parameter(np, internal_np::spur_length_factor_tag),
                        parameter_ranges::spur_length_factor.default_value),
+      "prune_skeleton");
+  const double protrusion_factor = internal::checked_parameter(
+      parameter_ranges::limb_protrusion_factor,
+      choose_parameter(get_parameter(np, internal_np::limb_protrusion_factor_tag),
+                       parameter_ranges::limb_protrusion_factor.default_value),
       "prune_skeleton");
   const auto radius_map = choose_parameter(get_parameter(np, internal_np::mat_radius_map_tag),
                                            CGAL::Constant_property_map<Voxel_key, double>(1.0));
@@ -108,6 +128,9 @@ Pruning_report prune_skeleton(VoxelSet& skeleton,
   // Snipping a twig can leave a small cluster of branched points where it hung, and
   // Algorithm 1 can turn a junction into a plain end branch: alternate the two until
   // neither changes anything.
+  internal::Spur_thresholds thresholds{factor, protrusion_factor, {}};
+  if(protrusion_factor > 0)
+    thresholds.largest_radius_of_piece = internal::largest_radius_of_pieces(skeleton, radius);
   Pruning_report report;
   for(bool first = true;; first = false)
   {
@@ -116,8 +139,8 @@ Pruning_report prune_skeleton(VoxelSet& skeleton,
       report.branched_regions = pruned.regions;
     report.removed_branched_points += pruned.removed_points;
     internal::Snipping snipped;
-    if(factor > 0)
-      snipped = internal::snip_spurious_branches_once(skeleton, radius, factor);
+    if(factor > 0 || protrusion_factor > 0)
+      snipped = internal::snip_spurious_branches_once(skeleton, radius, thresholds);
     report.snipped_branches += snipped.branches;
     report.snipped_points += snipped.points;
     if(pruned.removed_points == 0 && snipped.branches == 0)

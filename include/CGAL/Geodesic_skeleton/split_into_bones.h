@@ -18,6 +18,10 @@
 
 #include <CGAL/number_utils.h>
 
+#include <boost/range/iterator_range.hpp>
+
+#include <algorithm>
+
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
@@ -42,17 +46,55 @@ Bone_splitting_settings bone_splitting_settings(const NamedParameters& np,
                        ranges::straightness_tolerance.default_value),
       choose_parameter(get_parameter(np, internal_np::minimum_bone_length_factor_tag),
                        ranges::minimum_bone_length_factor.default_value),
+      choose_parameter(get_parameter(np, internal_np::maximum_bone_length_factor_tag),
+                       ranges::maximum_bone_length_factor.default_value),
       choose_parameter(get_parameter(np, internal_np::chord_length_factors_tag),
                        std::vector<double>{ranges::chord_length_factor.default_value,
                                            2 * ranges::chord_length_factor.default_value})};
   checked_parameter(ranges::bend_threshold, s.bend_threshold, caller);
   checked_parameter(ranges::straightness_tolerance, s.straightness_tolerance, caller);
   checked_parameter(ranges::minimum_bone_length_factor, s.minimum_bone_length_factor, caller);
+  checked_parameter(ranges::maximum_bone_length_factor, s.maximum_bone_length_factor, caller);
   if(s.chord_length_factors.empty())
     throw std::invalid_argument(caller + ": chord_length_factors must not be empty");
   for(double f : s.chord_length_factors)
     checked_parameter(ranges::chord_length_factor, f, caller, "each of chord_length_factors");
   return s;
+}
+
+// Per vertex of `skeleton` (vertices numbered 0 to n-1): the largest of `radii` over its
+// connected component.
+template <typename CurveSkeleton>
+std::vector<double> largest_radius_of_pieces(const CurveSkeleton& skeleton, const std::vector<double>& radii)
+{
+  const std::size_t n = radii.size();
+  std::vector<std::size_t> piece(n, n), stack;
+  std::vector<double> largest;
+  for(std::size_t seed = 0; seed < n; ++seed)
+  {
+    if(piece[seed] != n)
+      continue;
+    const std::size_t p = largest.size();
+    largest.push_back(0);
+    piece[seed] = p;
+    stack.assign(1, seed);
+    while(!stack.empty())
+    {
+      const std::size_t v = stack.back();
+      stack.pop_back();
+      largest[p] = std::max(largest[p], radii[v]);
+      for(auto w : boost::make_iterator_range(boost::adjacent_vertices(v, skeleton)))
+        if(piece[std::size_t(w)] == n)
+        {
+          piece[std::size_t(w)] = p;
+          stack.push_back(std::size_t(w));
+        }
+    }
+  }
+  std::vector<double> of_vertex(n);
+  for(std::size_t v = 0; v < n; ++v)
+    of_vertex[v] = largest[piece[v]];
+  return of_vertex;
 }
 
 // Algorithm 2 on a skeleton read through its point and radius maps: the body of
@@ -102,6 +144,7 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
       add_joint(v, d >= 3 ? Joint_kind::junction : Joint_kind::end);
   }
 
+  const std::vector<double> largest_radius_of_piece = largest_radius_of_pieces(skeleton, radii_of);
   for(Skeleton_branch branch : skeleton_branches(skeleton))
   {
     std::vector<std::size_t>& b = branch.vertices;
@@ -122,7 +165,7 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
       points.push_back(position(v));
       radii.push_back(radius(v));
     }
-    Branch_splitter splitter(points, radii, settings);
+    Branch_splitter splitter(points, radii, settings, largest_radius_of_piece[b.front()]);
     const std::vector<std::size_t> cuts = splitter.joints();
     for(std::size_t c = 0; c + 1 < cuts.size(); ++c)
     {
@@ -151,7 +194,11 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 /// between them is split recursively where the chord-to-point distance accumulation
 /// (`chord_to_point_distance_accumulation()`) peaks at `bend_threshold` or more, or where
 /// it strays from its chord by more than `straightness_tolerance` MAT radii, never leaving
-/// a bone shorter than `minimum_bone_length_factor` MAT radii; each component is rooted at
+/// a bone shorter than `minimum_bone_length_factor` MAT radii; a straight bone longer than
+/// `maximum_bone_length_factor` times the largest MAT radius of its connected component
+/// (the body's thickness; a straight limb has no bend to cut at) is cut
+/// into bones of about equal length, each cut at the narrowest point near its
+/// equal-length position (an elbow, a knee, a wrist); each component is rooted at
 /// its most central junction; when the shape has handles, the bones left off the trees (one
 /// per independent cycle) are in the graph bundle's `Control_skeleton_property::cut_bones`.
 /// The steps are described in the manual, section
@@ -214,6 +261,17 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 ///                           [0, 1000] (package parameter)}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{2}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_bone_length_factor}
+///     \cgalParamDescription{the longest straight bone, in units of the largest MAT radius
+///                           of its connected component of the skeleton (R), in [0, 1000]: a
+///                           longer one is cut into ceil(length / (factor * R)) bones of
+///                           about equal length,
+///                           each cut at the smallest MAT radius within a quarter of a bone's
+///                           length of its equal-length position; 0 turns this off (package
+///                           parameter)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{3}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{chord_length_factors}
 ///     \cgalParamDescription{the chord lengths of the accumulation, in MAT radii, each in

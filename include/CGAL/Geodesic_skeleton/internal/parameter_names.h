@@ -26,6 +26,7 @@ CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(voxelized_surface)
 // prune_skeleton; smooth_skeleton, split_into_bones, to_graph (the skeleton's radii)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(mat_radius_map)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(spur_length_factor)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(limb_protrusion_factor)
 
 // smooth_skeleton
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(smoothing_window)
@@ -38,6 +39,7 @@ CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(number_of_chords)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(bend_threshold)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(straightness_tolerance)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(minimum_bone_length_factor)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(maximum_bone_length_factor)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(chord_length_factors)
 
 // extract_control_skeleton

@@ -10,14 +10,26 @@
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
 #include <CGAL/Geodesic_skeleton/internal/prune/branched_regions.h>
 
+#include <CGAL/Geodesic_skeleton/internal/voxel_components.h>
+
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <tuple>
+#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
+
+inline std::int64_t squared_distance_between(const Voxel_key& a, const Voxel_key& b)
+{
+  const std::int64_t dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
+  return dx * dx + dy * dy + dz * dz;
+}
 
 // An end branch: the voxels from an end point up to (not including) its junction.
 struct End_branch
@@ -25,18 +37,17 @@ struct End_branch
   std::vector<Voxel_key> voxels; // from the end point inwards
   Voxel_key junction;
   double length = 0;             // arc length from the end point to the junction (voxels)
-  double relative_length = 0;    // length / MAT radius at the junction
+  double protrusion = 0;         // how far the branch's balls reach out of the junction's (voxels)
+  double spuriousness = 0;       // under 1 for a spur; the smaller, the earlier it is snipped
 };
 
-// Walks from the end point `end` along points of degree 2 until a point of degree 3 or
-// more. Returns false when the walk ends elsewhere (the component is a path or a cycle
-// fragment without junction), which is never a spurious branch.
+// Walks on from the last voxel of `branch` along points of degree 2 until a point of
+// degree 3 or more, which becomes the branch's junction. Returns false when the walk ends
+// elsewhere (another end, or a fork without junction point).
 template <typename VoxelSet>
-bool trace_end_branch(const VoxelSet& skeleton, const Voxel_key& end, End_branch& branch)
+bool walk_to_junction(const VoxelSet& skeleton, End_branch& branch)
 {
-  branch.voxels.assign(1, end);
-  branch.length = 0;
-  Voxel_key previous = end, current = end;
+  Voxel_key current = branch.voxels.back();
   while(true)
   {
     // The next voxel: the neighbour of `current` that is not already on the branch. Near
@@ -47,11 +58,7 @@ bool trace_end_branch(const VoxelSet& skeleton, const Voxel_key& end, End_branch
     for(const Voxel_key& offset : neighbourhood_26())
     {
       const Voxel_key n = current + offset;
-      if(n == previous || !skeleton.contains(n))
-        continue;
-      if(branch.voxels.size() >= 2 && n == branch.voxels[branch.voxels.size() - 2])
-        continue;
-      if(std::find(branch.voxels.begin(), branch.voxels.end(), n) != branch.voxels.end())
+      if(!skeleton.contains(n) || std::find(branch.voxels.begin(), branch.voxels.end(), n) != branch.voxels.end())
         continue;
       ++ahead;
       if(next == current || skeleton_degree(skeleton, n) >= 3)
@@ -67,24 +74,28 @@ bool trace_end_branch(const VoxelSet& skeleton, const Voxel_key& end, End_branch
     }
     if(ahead > 1)
       return false; // a fork without a junction point: leave it alone
-    previous = current;
     current = next;
     branch.voxels.push_back(current);
   }
 }
 
-// How many branches leave the junction that `j` belongs to: the junction is the
-// 26-connected cluster of points of degree 3 or more around `j` (thinning leaves small
-// clusters where branches meet), and a branch starts at a skeleton point next to the
-// cluster that is an end point or leads on out of the cluster. A point next to the
-// cluster whose neighbours are all in the cluster closes a little triangle inside the
-// junction and starts no branch.
+// The junction that `j` belongs to: the 26-connected cluster of points of degree 3 or more
+// around `j` (thinning leaves small clusters where branches meet), and its exits, the
+// skeleton points next to the cluster that start a branch: an end point, or a point that
+// leads on out of the cluster. A point next to the cluster whose neighbours are all in
+// the cluster closes a little triangle inside the junction and starts no branch.
+struct Junction_cluster
+{
+  std::vector<Voxel_key> voxels; // sorted
+  std::vector<Voxel_key> exits;  // sorted
+};
+
 template <typename VoxelSet>
-std::size_t branches_at_junction(const VoxelSet& skeleton, const Voxel_key& j)
+Junction_cluster junction_cluster(const VoxelSet& skeleton, const Voxel_key& j)
 {
   Voxel_key_set cluster{j};
   std::vector<Voxel_key> stack{j};
-  Voxel_key_set exits;
+  Voxel_key_set next_to_cluster;
   while(!stack.empty())
   {
     const Voxel_key k = stack.back();
@@ -100,26 +111,120 @@ std::size_t branches_at_junction(const VoxelSet& skeleton, const Voxel_key& j)
         stack.push_back(n);
       }
       else
-        exits.insert(n);
+        next_to_cluster.insert(n);
     }
   }
-  std::size_t branches = 0;
-  for(const Voxel_key& e : exits)
+  Junction_cluster result;
+  result.voxels.assign(cluster.begin(), cluster.end());
+  std::sort(result.voxels.begin(), result.voxels.end());
+  for(const Voxel_key& e : next_to_cluster)
   {
-    bool leads_out = false;
+    bool leads_out = skeleton_degree(skeleton, e) == 1;
     for(const Voxel_key& offset : neighbourhood_26())
     {
       const Voxel_key n = e + offset;
       if(skeleton.contains(n) && cluster.count(n) == 0)
-      {
         leads_out = true;
-        break;
-      }
     }
-    if(leads_out || skeleton_degree(skeleton, e) == 1)
-      ++branches;
+    if(leads_out)
+      result.exits.push_back(e);
   }
-  return branches;
+  std::sort(result.exits.begin(), result.exits.end());
+  return result;
+}
+
+// How many branches leave the junction that `j` belongs to.
+template <typename VoxelSet>
+std::size_t branches_at_junction(const VoxelSet& skeleton, const Voxel_key& j)
+{
+  return junction_cluster(skeleton, j).exits.size();
+}
+
+// Traces the end branch from the end point `end` to its junction: along points of degree
+// 2, and on through any cluster of points of degree 3 or more that only two branches
+// leave (a lump on a chain, not a junction). Returns false when the walk ends elsewhere
+// (the component is a path or a cycle fragment without junction), which is never a
+// spurious branch.
+template <typename VoxelSet>
+bool trace_end_branch(const VoxelSet& skeleton, const Voxel_key& end, End_branch& branch)
+{
+  branch.voxels.assign(1, end);
+  branch.length = 0;
+  while(walk_to_junction(skeleton, branch))
+  {
+    const Junction_cluster cluster = junction_cluster(skeleton, branch.junction);
+    if(cluster.exits.size() != 2)
+      return true;
+    const Voxel_key& last = branch.voxels.back();
+    const Voxel_key& other = cluster.exits[0] == last ? cluster.exits[1] : cluster.exits[0];
+    if(other == last || std::find(branch.voxels.begin(), branch.voxels.end(), other) != branch.voxels.end())
+      return false; // the lump closes a loop onto the branch
+    for(const Voxel_key& k : cluster.voxels)
+      branch.voxels.push_back(k);
+    branch.length += std::sqrt(double(squared_distance_between(last, other))) - step_length(last, branch.junction);
+    branch.voxels.push_back(other);
+  }
+  return false;
+}
+
+// The thresholds of the snipping: an end branch is a spur when it is shorter than
+// `spur_length_factor` MAT radii at its junction, or when its MAT balls reach less than
+// `limb_protrusion_factor` times the largest MAT radius of its skeleton piece out of its
+// junction's ball. A factor 0 turns its test off.
+struct Spur_thresholds
+{
+  double spur_length_factor = 0;
+  double limb_protrusion_factor = 0;
+  // The largest MAT radius of the piece of the skeleton each voxel is in.
+  std::unordered_map<Voxel_key, double, Voxel_key_hash> largest_radius_of_piece;
+};
+
+// The largest MAT radius of each 26-connected piece of `skeleton`, recorded for every voxel.
+template <typename VoxelSet, typename Radius>
+std::unordered_map<Voxel_key, double, Voxel_key_hash> largest_radius_of_pieces(const VoxelSet& skeleton,
+                                                                               const Radius& radius)
+{
+  std::vector<Voxel_key> keys;
+  skeleton.for_each([&](const Voxel_key& k) { keys.push_back(k); });
+  std::vector<std::size_t> piece;
+  const std::size_t pieces = voxel_components(keys, [&](const Voxel_key& k) { return skeleton.contains(k); }, piece);
+  std::vector<double> largest(pieces, 0.0);
+  for(std::size_t i = 0; i < keys.size(); ++i)
+    largest[piece[i]] = std::max(largest[piece[i]], radius(keys[i]));
+  std::unordered_map<Voxel_key, double, Voxel_key_hash> of_voxel;
+  of_voxel.reserve(keys.size());
+  for(std::size_t i = 0; i < keys.size(); ++i)
+    of_voxel.emplace(keys[i], largest[piece[i]]);
+  return of_voxel;
+}
+
+// How far the MAT balls of `branch` reach out of the ball of its junction: the largest
+// |k - junction| + r(k) - r(junction) over its voxels k (voxels).
+template <typename Radius>
+double protrusion_of(const End_branch& branch, const Radius& radius)
+{
+  double reach = 0;
+  for(const Voxel_key& k : branch.voxels)
+    reach = std::max(reach, std::sqrt(double(squared_distance_between(k, branch.junction))) + radius(k));
+  return reach - radius(branch.junction);
+}
+
+// How spurious `branch` is: the smaller of its length over the spur length and its
+// protrusion over the smallest limb protrusion (each infinite when its test is off).
+template <typename Radius>
+double spuriousness_of(const End_branch& branch, const Radius& radius, const Spur_thresholds& thresholds)
+{
+  double s = std::numeric_limits<double>::infinity();
+  const double junction_radius = std::max(radius(branch.junction), 1e-12);
+  if(thresholds.spur_length_factor > 0)
+    s = branch.length / (thresholds.spur_length_factor * junction_radius);
+  if(thresholds.limb_protrusion_factor > 0)
+  {
+    const auto piece = thresholds.largest_radius_of_piece.find(branch.junction);
+    const double largest = piece != thresholds.largest_radius_of_piece.end() ? piece->second : junction_radius;
+    s = std::min(s, branch.protrusion / (thresholds.limb_protrusion_factor * std::max(largest, 1e-12)));
+  }
+  return s;
 }
 
 struct Snipping
@@ -127,10 +232,10 @@ struct Snipping
   std::size_t branches = 0, points = 0;
 };
 
-// One round: snips the end branches shorter than `factor` MAT radii at their junction,
-// shortest first, each only while three branches or more leave its junction.
+// One round: snips the end branches that `thresholds` calls spurs, the most spurious
+// first, each only while three branches or more leave its junction.
 template <typename VoxelSet, typename Radius>
-Snipping snip_spurious_branches_once(VoxelSet& skeleton, const Radius& radius, double factor)
+Snipping snip_spurious_branches_once(VoxelSet& skeleton, const Radius& radius, const Spur_thresholds& thresholds)
 {
   std::vector<Voxel_key> ends;
   skeleton.for_each([&](const Voxel_key& k) {
@@ -145,13 +250,13 @@ Snipping snip_spurious_branches_once(VoxelSet& skeleton, const Radius& radius, d
     End_branch branch;
     if(!trace_end_branch(skeleton, end, branch))
       continue;
-    const double r = std::max(radius(branch.junction), 1e-12);
-    branch.relative_length = branch.length / r;
-    if(branch.relative_length < factor)
+    branch.protrusion = protrusion_of(branch, radius);
+    branch.spuriousness = spuriousness_of(branch, radius, thresholds);
+    if(branch.spuriousness < 1)
       spurs.push_back(std::move(branch));
   }
   std::sort(spurs.begin(), spurs.end(), [](const End_branch& a, const End_branch& b) {
-    return std::tie(a.relative_length, a.voxels.front()) < std::tie(b.relative_length, b.voxels.front());
+    return std::tie(a.spuriousness, a.voxels.front()) < std::tie(b.spuriousness, b.voxels.front());
   });
 
   Snipping result;

@@ -26,20 +26,28 @@ namespace internal {
 // than the part fits nowhere in it and gives none).
 constexpr double longest_chord_in_part_lengths = 0.5;
 
+// The most bones a straight part is cut into by its length: a limb has three or four, and a
+// shape whose thickest part is thin (a plate, a cape alone) would otherwise get a bone
+// every few thicknesses.
+constexpr std::size_t most_bones_per_straight_part = 4;
+
 struct Bone_splitting_settings
 {
   double bend_threshold;           // CPDA value (in chord lengths) that makes a bend a joint
   double straightness_tolerance;   // allowed deviation from the chord, in MAT radii
   double minimum_bone_length_factor; // shortest bone, in MAT radii
+  double maximum_bone_length_factor; // longest straight bone, in largest MAT radii of the piece (0: no limit)
   std::vector<double> chord_length_factors; // CPDA chord lengths, in MAT radii
 };
 
 class Branch_splitter
 {
 public:
+  // `largest_radius`: the largest MAT radius of the skeleton's piece that the branch is in.
   Branch_splitter(const std::vector<Vec3>& points, const std::vector<double>& radii,
-                  const Bone_splitting_settings& settings)
-    : m_p(points), m_r(radii), m_settings(settings), m_s(points.size(), 0.0)
+                  const Bone_splitting_settings& settings, double largest_radius)
+    : m_p(points), m_r(radii), m_settings(settings), m_s(points.size(), 0.0),
+      m_longest_bone(settings.maximum_bone_length_factor * largest_radius)
   {
     for(std::size_t i = 1; i < m_p.size(); ++i)
       m_s[i] = m_s[i - 1] + norm3(sub(m_p[i], m_p[i - 1]));
@@ -117,11 +125,53 @@ private:
         }
       }
       if(deviation <= m_settings.straightness_tolerance * radius)
+      {
+        subdivide(i, j, radius, cuts);
         return;
+      }
     }
     split(i, best, cuts);
     cuts.push_back(best);
     split(best, j, cuts);
+  }
+
+  // A straight part longer than the longest bone (`maximum_bone_length_factor` times the
+  // largest MAT radius of the piece: the body's thickness, so that a thin limb gets as
+  // many bones as a thick one of the same length): cut it into n bones of about equal
+  // length, n the fewest that are short enough (at most `most_bones_per_straight_part`, and
+  // no more than leave each bone `minimum_bone_length_factor` radii long), each cut at the narrowest point (the smallest
+  // MAT radius, where an elbow, a knee or a wrist is) within a quarter of a bone's length
+  // of its equal-length position, ties to the nearest that position.
+  void subdivide(std::size_t i, std::size_t j, double radius, std::vector<std::size_t>& cuts) const
+  {
+    const double longest = m_longest_bone;
+    const double shortest = m_settings.minimum_bone_length_factor * radius;
+    const double length = m_s[j] - m_s[i];
+    if(!(longest > 0) || length <= longest)
+      return;
+    double bones = std::min(std::ceil(length / longest), double(most_bones_per_straight_part));
+    if(shortest > 0)
+      bones = std::min(bones, std::floor(length / shortest));
+    const std::size_t n = bones >= 2 ? std::size_t(bones) : 1;
+    const double bone = length / double(n);
+    std::size_t previous = i;
+    for(std::size_t c = 1; c < n; ++c)
+    {
+      const double target = m_s[i] + bone * double(c);
+      std::size_t best = j;
+      for(std::size_t k = previous + 1; k < j; ++k)
+      {
+        if(std::abs(m_s[k] - target) > bone / 4 || m_s[k] - m_s[previous] < shortest || m_s[j] - m_s[k] < shortest)
+          continue;
+        if(best == j || m_r[k] < m_r[best] ||
+           (m_r[k] == m_r[best] && std::abs(m_s[k] - target) < std::abs(m_s[best] - target)))
+          best = k;
+      }
+      if(best == j)
+        continue;
+      cuts.push_back(best);
+      previous = best;
+    }
   }
 
   static std::vector<CGAL::Simple_cartesian<double>::Point_3> as_points(const std::vector<Vec3>& v)
@@ -137,6 +187,7 @@ private:
   const std::vector<double>& m_r;
   const Bone_splitting_settings& m_settings;
   std::vector<double> m_s;
+  double m_longest_bone;
 };
 
 } // namespace internal
