@@ -155,8 +155,9 @@ bool trace_end_branch(const VoxelSet& skeleton, const Voxel_key& end, End_branch
     const Junction_cluster cluster = junction_cluster(skeleton, branch.junction);
     if(cluster.exits.size() != 2)
       return true;
-    const Voxel_key& last = branch.voxels.back();
-    const Voxel_key& other = cluster.exits[0] == last ? cluster.exits[1] : cluster.exits[0];
+    // Copies: the pushes below may move the branch's voxels.
+    const Voxel_key last = branch.voxels.back();
+    const Voxel_key other = cluster.exits[0] == last ? cluster.exits[1] : cluster.exits[0];
     if(other == last || std::find(branch.voxels.begin(), branch.voxels.end(), other) != branch.voxels.end())
       return false; // the lump closes a loop onto the branch
     for(const Voxel_key& k : cluster.voxels)
