@@ -4,6 +4,7 @@
 
 #include <Geodesic_skeleton_test/joints.h>
 #include <Geodesic_skeleton_test/shapes.h>
+#include <Geodesic_skeleton_test/voxel_skeleton.h>
 #include <Geodesic_skeleton_test/winding_number.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -15,8 +16,8 @@
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <map>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -255,26 +256,16 @@ Mesh split_at_midpoints(const Mesh& mesh)
   test::Soup soup;
   for(auto v : vertices(mesh))
     soup.add_point(mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z());
-  std::map<std::pair<std::size_t, std::size_t>, std::size_t> midpoints;
-  auto midpoint = [&](std::size_t a, std::size_t b) {
-    const auto edge = std::make_pair((std::min)(a, b), (std::max)(a, b));
-    if(const auto known = midpoints.find(edge); known != midpoints.end())
-      return known->second;
-    const auto& p = soup.points[a];
-    const auto& q = soup.points[b];
-    return midpoints[edge] = soup.add_point(0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1]), 0.5 * (p[2] + q[2]));
-  };
   for(auto f : faces(mesh))
   {
-    std::vector<std::size_t> c;
+    std::vector<std::size_t> corners;
     for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
-      c.push_back(std::size_t(v));
-    const std::size_t ab = midpoint(c[0], c[1]), bc = midpoint(c[1], c[2]), ca = midpoint(c[2], c[0]);
-    soup.add_triangle(c[0], ab, ca);
-    soup.add_triangle(ab, c[1], bc);
-    soup.add_triangle(ca, bc, c[2]);
-    soup.add_triangle(ab, bc, ca);
+      corners.push_back(std::size_t(v));
+    soup.faces.push_back(corners);
   }
+  test::split_in_four(soup, [&](const std::array<double, 3>& p, const std::array<double, 3>& q) {
+    return soup.add_point(0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1]), 0.5 * (p[2] + q[2]));
+  });
   return test::mesh_of<Mesh>(soup);
 }
 
@@ -299,14 +290,13 @@ BOOST_AUTO_TEST_CASE(another_tessellation_of_the_same_surface_gives_the_same_joi
       const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh);
       const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
                                         CGAL::square(box.zmax() - box.zmin()));
-      double worst = 0;
-      for(const auto& j : test::joints(original.control))
-      {
-        double nearest = HUGE_VAL;
-        for(const auto& k : test::joints(retessellated.control))
-          nearest = (std::min)(nearest, std::sqrt(CGAL::squared_distance(j.point, k.point)));
-        worst = (std::max)(worst, nearest);
-      }
+      auto points_of = [](const Control& c) {
+        std::vector<Point> points;
+        for(const auto& j : test::joints(c))
+          points.push_back(j.point);
+        return points;
+      };
+      const double worst = test::hausdorff(points_of(original.control), points_of(retessellated.control));
       BOOST_TEST_MESSAGE(name << ": worst joint " << worst / diagonal << " of the diagonal away");
       BOOST_TEST(worst <= 0.01 * diagonal);
     }

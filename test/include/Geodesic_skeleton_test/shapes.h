@@ -55,6 +55,31 @@ void soup_to_mesh(const Soup& soup, Mesh& mesh)
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, soup.faces, mesh);
 }
 
+// Splits every triangle of `s` into four at its edges: `edge_point(p, q)` adds the point
+// that splits the edge p-q to `s` and returns its index (once per edge).
+template <typename EdgePoint>
+void split_in_four(Soup& s, EdgePoint edge_point)
+{
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> point_of_edge;
+  auto split_point = [&](std::size_t a, std::size_t b) {
+    const std::pair<std::size_t, std::size_t> edge((std::min)(a, b), (std::max)(a, b));
+    if(const auto known = point_of_edge.find(edge); known != point_of_edge.end())
+      return known->second;
+    const std::array<double, 3> p = s.points[a], q = s.points[b]; // copies: adding a point may move them
+    return point_of_edge[edge] = edge_point(p, q);
+  };
+  std::vector<std::vector<std::size_t>> finer;
+  for(const auto& f : s.faces)
+  {
+    const std::size_t ab = split_point(f[0], f[1]), bc = split_point(f[1], f[2]), ca = split_point(f[2], f[0]);
+    finer.push_back({f[0], ab, ca});
+    finer.push_back({f[1], bc, ab});
+    finer.push_back({f[2], ca, bc});
+    finer.push_back({ab, bc, ca});
+  }
+  s.faces.swap(finer);
+}
+
 // An icosahedron whose faces are split `subdivisions` times into 4, projected on the sphere.
 inline Soup icosphere(double radius, int subdivisions)
 {
@@ -73,30 +98,9 @@ inline Soup icosphere(double radius, int subdivisions)
              {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6},  {3, 6, 8},
              {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
   for(int level = 0; level < subdivisions; ++level)
-  {
-    std::map<std::pair<std::size_t, std::size_t>, std::size_t> midpoint_of;
-    auto midpoint = [&](std::size_t a, std::size_t b) {
-      const auto key = std::minmax(a, b);
-      auto it = midpoint_of.find(key);
-      if(it != midpoint_of.end())
-        return it->second;
-      const auto& p = s.points[a];
-      const auto& q = s.points[b];
-      const std::size_t m = add_on_sphere(p[0] + q[0], p[1] + q[1], p[2] + q[2]);
-      midpoint_of.emplace(key, m);
-      return m;
-    };
-    std::vector<std::vector<std::size_t>> finer;
-    for(const auto& f : s.faces)
-    {
-      const std::size_t ab = midpoint(f[0], f[1]), bc = midpoint(f[1], f[2]), ca = midpoint(f[2], f[0]);
-      finer.push_back({f[0], ab, ca});
-      finer.push_back({f[1], bc, ab});
-      finer.push_back({f[2], ca, bc});
-      finer.push_back({ab, bc, ca});
-    }
-    s.faces.swap(finer);
-  }
+    split_in_four(s, [&](const std::array<double, 3>& p, const std::array<double, 3>& q) {
+      return add_on_sphere(p[0] + q[0], p[1] + q[1], p[2] + q[2]);
+    });
   return s;
 }
 
