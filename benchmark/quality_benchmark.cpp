@@ -1,6 +1,7 @@
 // quality_benchmark: what the control skeletons look like, in numbers, on the closed demo
-// meshes that are characters or animals and on three synthetic shapes (a thin plate, a
-// winged body, a T-pose figure: test/include/Geodesic_skeleton_test/characters.h), at
+// meshes that are characters or animals and on four synthetic shapes (a thin plate, a
+// winged body, a T-pose figure, a six-armed star with nearly equal principal axes:
+// test/include/Geodesic_skeleton_test/characters.h), at
 // several resolutions. Per mesh and resolution, one run of extract_control_skeleton():
 //   - end points and junctions: joints of degree 1 and of degree >= 3 (the degree counts
 //     the bones and the cut bones at a joint); joints; bones (cut bones included);
@@ -15,10 +16,18 @@
 // resolution over joints at 64 (or at the first, without 64), flagged "*" outside
 // [0.75, 1.25].
 //
-//   quality_benchmark [DATA_DIR] [--meshes a,b,c] [--resolutions 48,64,96,128] [--write-shapes DIR]
+// With --rigid-motions N, then the invariance under rigid motion: per mesh and resolution,
+// the mesh moved by N random rigid motions (seeds 1 to N), the end points of each moved
+// copy's control skeleton (fewest and most), and the farthest joint of a moved copy's
+// skeleton, moved back, from the original's nearest joint or the reverse (the symmetric
+// Hausdorff distance, worst over the N copies), in % of the diagonal.
 //
-// --write-shapes DIR writes the synthetic shapes to DIR/plate.off, DIR/winged_body.off and
-// DIR/t_pose_figure.off (to look at them with skeletonize) and stops.
+//   quality_benchmark [DATA_DIR] [--meshes a,b,c] [--resolutions 48,64,96,128]
+//                     [--rigid-motions N] [--write-shapes DIR]
+//
+// --write-shapes DIR writes the synthetic shapes to DIR/plate.off, DIR/winged_body.off,
+// DIR/t_pose_figure.off and DIR/six_armed_star.off (to look at them with skeletonize) and
+// stops.
 
 #include <CGAL/Geodesic_skeleton/extract_control_skeleton.h>
 
@@ -34,6 +43,7 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include <Geodesic_skeleton_test/characters.h>
+#include <Geodesic_skeleton_test/voxel_skeleton.h>
 
 #include "benchmark_common.h"
 
@@ -67,13 +77,15 @@ struct Options
 {
   std::string data_dir = GEODESIC_SKELETON_DATA_DIR;
   std::vector<std::string> names = {"cow", "elephant", "dino",  "camel",   "horse",       "armadillo",    "man",
-                                    "bunny", "hand",   "octopus", "plate", "winged_body", "t_pose_figure"};
+                                    "bunny", "hand",   "octopus", "plate", "winged_body", "t_pose_figure",
+                                    "six_armed_star"};
   std::vector<int> resolutions = {48, 64, 96, 128};
+  int rigid_motions = 0;
   std::string shapes_dir; // --write-shapes
 };
 
-// Reads [DATA_DIR] [--meshes a,b] [--resolutions 48,64] [--write-shapes DIR]; prints the
-// usage and returns false on anything else.
+// Reads [DATA_DIR] [--meshes a,b] [--resolutions 48,64] [--rigid-motions N]
+// [--write-shapes DIR]; prints the usage and returns false on anything else.
 bool parse_options(int argc, char* argv[], Options& o)
 {
   for(int i = 1; i < argc; ++i)
@@ -87,6 +99,12 @@ bool parse_options(int argc, char* argv[], Options& o)
       for(const std::string& r : split_commas(argv[++i]))
         o.resolutions.push_back(std::atoi(r.c_str()));
     }
+    else if(arg == "--rigid-motions" && i + 1 < argc)
+    {
+      o.rigid_motions = std::atoi(argv[++i]);
+      if(o.rigid_motions < 0)
+        return false;
+    }
     else if(arg == "--write-shapes" && i + 1 < argc)
       o.shapes_dir = argv[++i];
     else if(!arg.empty() && arg[0] != '-')
@@ -94,7 +112,8 @@ bool parse_options(int argc, char* argv[], Options& o)
     else
     {
       std::cout << "usage: " << argv[0]
-                << " [DATA_DIR] [--meshes a,b,c] [--resolutions 48,64,96,128] [--write-shapes DIR]\n";
+                << " [DATA_DIR] [--meshes a,b,c] [--resolutions 48,64,96,128] [--rigid-motions N]"
+                   " [--write-shapes DIR]\n";
       return false;
     }
   }
@@ -103,7 +122,10 @@ bool parse_options(int argc, char* argv[], Options& o)
 
 // The synthetic shapes of characters.h, by name.
 const std::map<std::string, shapes::Soup (*)()> synthetic_shapes = {
-    {"plate", shapes::plate}, {"winged_body", shapes::winged_body}, {"t_pose_figure", shapes::t_pose_figure}};
+    {"plate", shapes::plate},
+    {"winged_body", shapes::winged_body},
+    {"t_pose_figure", shapes::t_pose_figure},
+    {"six_armed_star", shapes::six_armed_star}};
 
 // A synthetic shape, or DATA_DIR/NAME.off; nothing when neither exists.
 std::optional<Mesh> load_mesh(const std::string& name, const std::string& data_dir)
@@ -297,6 +319,54 @@ void print_stability_table(const std::vector<std::pair<std::string, std::vector<
               << " meshes\n";
 }
 
+// The joint positions of the control skeleton of `mesh` at `resolution`, and its end points.
+std::vector<Point> joints_and_ends(const Mesh& mesh, int resolution, std::size_t& end_points)
+{
+  Control control;
+  gs::extract_control_skeleton(mesh, control, params::resolution(resolution));
+  std::vector<Point> points;
+  for(auto j : CGAL::make_range(vertices(control)))
+    points.push_back(control[j].point);
+  end_points = count_joints(control).end_points;
+  return points;
+}
+
+// One row of the rigid-motion table for `mesh` at `resolution`, over `motions` random rigid
+// motions (a rotation and a translation of about the mesh's size).
+void print_rigid_motion_row(const std::string& name, const Mesh& mesh, int resolution, int motions)
+{
+  std::cout << "| " << name << " | " << resolution << " | ";
+  try
+  {
+    std::size_t ends = 0;
+    const std::vector<Point> original = joints_and_ends(mesh, resolution, ends);
+    const double diagonal = bounding_box_diagonal(mesh);
+    std::size_t fewest = std::size_t(-1), most = 0;
+    double worst = 0;
+    for(int seed = 1; seed <= motions; ++seed)
+    {
+      const auto motion = shapes::random_rigid_motion<Kernel>(unsigned(seed), 0.3 * diagonal, -1.2 * diagonal,
+                                                              2.0 * diagonal);
+      Mesh moved = mesh;
+      for(auto v : vertices(moved))
+        moved.point(v) = motion.transform(moved.point(v));
+      std::size_t moved_ends = 0;
+      std::vector<Point> back = joints_and_ends(moved, resolution, moved_ends);
+      const auto inverse = motion.inverse();
+      for(Point& p : back)
+        p = inverse.transform(p);
+      fewest = (std::min)(fewest, moved_ends);
+      most = (std::max)(most, moved_ends);
+      worst = (std::max)(worst, shapes::hausdorff(original, back));
+    }
+    std::cout << ends << " | " << fewest << " | " << most << " | " << 100 * worst / diagonal << " |\n";
+  }
+  catch(const std::exception& e)
+  {
+    std::cout << "failed: " << e.what() << " | | | |\n";
+  }
+}
+
 // Writes the synthetic shapes to DIR/NAME.off.
 bool write_shapes(const std::string& dir)
 {
@@ -344,5 +414,15 @@ int main(int argc, char* argv[])
       joints.back().second.push_back(print_quality_row(name, *mesh, inside ? &*inside : nullptr, resolution));
   }
   print_stability_table(joints, options.resolutions);
+  if(options.rigid_motions > 0)
+  {
+    std::cout << "\ninvariance under " << options.rigid_motions
+              << " random rigid motions\n\n| mesh | resolution | end points | end points moved, fewest | most"
+                 " | farthest joint (% of diagonal) |\n|---|---:|---:|---:|---:|---:|\n";
+    for(const auto& [name, counts] : joints)
+      if(const std::optional<Mesh> mesh = load_mesh(name, options.data_dir))
+        for(int resolution : options.resolutions)
+          print_rigid_motion_row(name, *mesh, resolution, options.rigid_motions);
+  }
   return 0;
 }

@@ -18,7 +18,8 @@
 
 #include <CGAL/number_utils.h>
 
-#include <boost/range/iterator_range.hpp>
+#include <boost/graph/connected_components.hpp>
+#include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
 
@@ -68,29 +69,12 @@ template <typename CurveSkeleton>
 std::vector<double> largest_radius_of_pieces(const CurveSkeleton& skeleton, const std::vector<double>& radii)
 {
   const std::size_t n = radii.size();
-  std::vector<std::size_t> piece(n, n), stack;
-  std::vector<double> largest;
-  for(std::size_t seed = 0; seed < n; ++seed)
-  {
-    if(piece[seed] != n)
-      continue;
-    const std::size_t p = largest.size();
-    largest.push_back(0);
-    piece[seed] = p;
-    stack.assign(1, seed);
-    while(!stack.empty())
-    {
-      const std::size_t v = stack.back();
-      stack.pop_back();
-      largest[p] = std::max(largest[p], radii[v]);
-      for(auto w : boost::make_iterator_range(boost::adjacent_vertices(v, skeleton)))
-        if(piece[std::size_t(w)] == n)
-        {
-          piece[std::size_t(w)] = p;
-          stack.push_back(std::size_t(w));
-        }
-    }
-  }
+  std::vector<std::size_t> piece(n);
+  const std::size_t pieces = n == 0 ? 0 : boost::connected_components(
+      skeleton, boost::make_iterator_property_map(piece.begin(), get(boost::vertex_index, skeleton)));
+  std::vector<double> largest(pieces, 0.0);
+  for(std::size_t v = 0; v < n; ++v)
+    largest[piece[v]] = std::max(largest[piece[v]], radii[v]);
   std::vector<double> of_vertex(n);
   for(std::size_t v = 0; v < n; ++v)
     of_vertex[v] = largest[piece[v]];

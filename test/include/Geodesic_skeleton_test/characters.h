@@ -1,5 +1,5 @@
-// Synthetic characters for the skeleton-quality benchmark: a thin plate, a winged body and
-// a humanoid in T-pose. Each is a union of overlapping closed, outward-oriented pieces
+// Synthetic characters for the skeleton-quality benchmark: a thin plate, a winged body, a
+// humanoid in T-pose and a six-armed star. Each is a union of overlapping closed, outward-oriented pieces
 // (the union self-intersects; the package's voxelizer fills each closed piece), built from
 // shapes.h's soups. Units are arbitrary (about a metre for the figure).
 
@@ -174,6 +174,18 @@ inline Soup t_pose_figure()
     append(s, capsule({side * 0.12, 0, 1.42}, {side * 0.75, 0, 1.42}, 0.05)); // arm
     append(s, icosphere(0.065, 2), side * 0.82, 0, 1.42);                      // hand
   }
+  return s;
+}
+
+// A six-armed star, 1.24 across: three capsules of radius 0.1 crossed at the origin, along
+// x, y and z, from -0.5 to 0.5, -0.51 to 0.51 and -0.52 to 0.52. Its principal axes are
+// nearly equal, so its voxel frame turns a long way under a small change of the shape;
+// each of the six arms should end in an end point whatever the frame.
+inline Soup six_armed_star()
+{
+  Soup s = capsule({-0.5, 0, 0}, {0.5, 0, 0}, 0.1);
+  append(s, capsule({0, -0.51, 0}, {0, 0.51, 0}, 0.1));
+  append(s, capsule({0, 0, -0.52}, {0, 0, 0.52}, 0.1));
   return s;
 }
 

@@ -37,7 +37,6 @@ struct End_branch
   std::vector<Voxel_key> voxels; // from the end point inwards
   Voxel_key junction;
   double length = 0;             // arc length from the end point to the junction (voxels)
-  double protrusion = 0;         // how far the branch's balls reach out of the junction's (voxels)
   double spuriousness = 0;       // under 1 for a spur; the smaller, the earlier it is snipped
 };
 
@@ -211,7 +210,8 @@ double protrusion_of(const End_branch& branch, const Radius& radius)
 }
 
 // How spurious `branch` is: the smaller of its length over the spur length and its
-// protrusion over the smallest limb protrusion (each infinite when its test is off).
+// protrusion (protrusion_of()) over the smallest limb protrusion (each infinite when its
+// test is off).
 template <typename Radius>
 double spuriousness_of(const End_branch& branch, const Radius& radius, const Spur_thresholds& thresholds)
 {
@@ -223,7 +223,7 @@ double spuriousness_of(const End_branch& branch, const Radius& radius, const Spu
   {
     const auto piece = thresholds.largest_radius_of_piece.find(branch.junction);
     const double largest = piece != thresholds.largest_radius_of_piece.end() ? piece->second : junction_radius;
-    s = std::min(s, branch.protrusion / (thresholds.limb_protrusion_factor * std::max(largest, 1e-12)));
+    s = std::min(s, protrusion_of(branch, radius) / (thresholds.limb_protrusion_factor * std::max(largest, 1e-12)));
   }
   return s;
 }
@@ -251,7 +251,6 @@ Snipping snip_spurious_branches_once(VoxelSet& skeleton, const Radius& radius, c
     End_branch branch;
     if(!trace_end_branch(skeleton, end, branch))
       continue;
-    branch.protrusion = protrusion_of(branch, radius);
     branch.spuriousness = spuriousness_of(branch, radius, thresholds);
     if(branch.spuriousness < 1)
       spurs.push_back(std::move(branch));
