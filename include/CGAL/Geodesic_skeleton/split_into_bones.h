@@ -195,8 +195,8 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 /// and without `mat_radius_map` does not compile (a `static_assert` names
 /// `mat_radius_map`).
 ///
-/// \tparam CurveSkeleton a `boost::adjacency_list` with `vecS` vertex storage (its vertex
-///         descriptors are the indices 0 to N-1), e.g. `Curve_skeleton<Point, MeshVertex>`
+/// \tparam CurveSkeleton an undirected `boost::adjacency_list` with `vecS` vertex storage
+///         (its vertex descriptors are the indices 0 to N-1), e.g. `Curve_skeleton<Point, MeshVertex>`
 ///         or `CGAL::Mean_curvature_flow_skeletonization<TriangleMesh>::Skeleton`, usually
 ///         after `smooth_skeleton()`. Its vertex bundle has a `point` member (a CGAL point)
 ///         unless a `vertex_point_map` is given, and a `radius` member (`double`, world
