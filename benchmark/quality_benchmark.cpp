@@ -55,6 +55,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -252,9 +253,24 @@ Points_outside curve_points_outside(const Mesh_inside& inside, const Curve& curv
   return out;
 }
 
-// One row of the quality table for `mesh` at `resolution`; returns the joints (0 when the
-// chain failed).
-std::size_t print_quality_row(const std::string& name, const Mesh& mesh, const Mesh_inside* inside, int resolution)
+// What one run leaves for the later tables: its joints (none when the chain failed) and
+// its end points.
+struct Quality_run
+{
+  std::vector<Point> joints;
+  std::size_t end_points = 0;
+};
+
+std::vector<Point> joint_points(const Control& control)
+{
+  std::vector<Point> points;
+  for(auto j : CGAL::make_range(vertices(control)))
+    points.push_back(control[j].point);
+  return points;
+}
+
+// One row of the quality table for `mesh` at `resolution`.
+Quality_run print_quality_row(const std::string& name, const Mesh& mesh, const Mesh_inside* inside, int resolution)
 {
   std::cout << "| " << name << " | " << resolution << " | ";
   Control control;
@@ -267,7 +283,7 @@ std::size_t print_quality_row(const std::string& name, const Mesh& mesh, const M
   catch(const std::exception& e)
   {
     std::cout << "failed: " << e.what() << " | | | | | | | |\n";
-    return 0;
+    return {};
   }
   const Joint_counts c = count_joints(control);
   std::cout << c.end_points << " | " << c.junctions << " | " << c.joints << " | " << c.bones << " | "
@@ -279,7 +295,7 @@ std::size_t print_quality_row(const std::string& name, const Mesh& mesh, const M
     const Points_outside out = curve_points_outside(*inside, curve);
     std::cout << out.count << " | " << 100 * out.max_distance / bounding_box_diagonal(mesh) << " |\n";
   }
-  return c.joints;
+  return {joint_points(control), c.end_points};
 }
 
 // The resolution-stability table: joints per resolution, and joints at the last resolution
@@ -319,27 +335,20 @@ void print_stability_table(const std::vector<std::pair<std::string, std::vector<
               << " meshes\n";
 }
 
-// The joint positions of the control skeleton of `mesh` at `resolution`, and its end points.
-std::vector<Point> joints_and_ends(const Mesh& mesh, int resolution, std::size_t& end_points)
+// One row of the rigid-motion table for `mesh` at `resolution`, whose own run is
+// `original`, over `motions` random rigid motions (a rotation, and a translation of about
+// two diagonals), to `out`.
+void print_rigid_motion_row(std::ostream& out, const std::string& name, const Mesh& mesh, int resolution,
+                            const Quality_run& original, int motions)
 {
-  Control control;
-  gs::extract_control_skeleton(mesh, control, params::resolution(resolution));
-  std::vector<Point> points;
-  for(auto j : CGAL::make_range(vertices(control)))
-    points.push_back(control[j].point);
-  end_points = count_joints(control).end_points;
-  return points;
-}
-
-// One row of the rigid-motion table for `mesh` at `resolution`, over `motions` random rigid
-// motions (a rotation and a translation of about the mesh's size).
-void print_rigid_motion_row(const std::string& name, const Mesh& mesh, int resolution, int motions)
-{
-  std::cout << "| " << name << " | " << resolution << " | ";
+  out << "| " << name << " | " << resolution << " | ";
+  if(original.joints.empty())
+  {
+    out << "failed | | | |\n";
+    return;
+  }
   try
   {
-    std::size_t ends = 0;
-    const std::vector<Point> original = joints_and_ends(mesh, resolution, ends);
     const double diagonal = bounding_box_diagonal(mesh);
     std::size_t fewest = std::size_t(-1), most = 0;
     double worst = 0;
@@ -350,20 +359,22 @@ void print_rigid_motion_row(const std::string& name, const Mesh& mesh, int resol
       Mesh moved = mesh;
       for(auto v : vertices(moved))
         moved.point(v) = motion.transform(moved.point(v));
-      std::size_t moved_ends = 0;
-      std::vector<Point> back = joints_and_ends(moved, resolution, moved_ends);
+      Control control;
+      gs::extract_control_skeleton(moved, control, params::resolution(resolution));
+      std::vector<Point> back = joint_points(control);
       const auto inverse = motion.inverse();
       for(Point& p : back)
         p = inverse.transform(p);
+      const std::size_t moved_ends = count_joints(control).end_points;
       fewest = (std::min)(fewest, moved_ends);
       most = (std::max)(most, moved_ends);
-      worst = (std::max)(worst, shapes::hausdorff(original, back));
+      worst = (std::max)(worst, shapes::hausdorff(original.joints, back));
     }
-    std::cout << ends << " | " << fewest << " | " << most << " | " << 100 * worst / diagonal << " |\n";
+    out << original.end_points << " | " << fewest << " | " << most << " | " << 100 * worst / diagonal << " |\n";
   }
   catch(const std::exception& e)
   {
-    std::cout << "failed: " << e.what() << " | | | |\n";
+    out << "failed: " << e.what() << " | | | |\n";
   }
 }
 
@@ -398,6 +409,8 @@ int main(int argc, char* argv[])
   std::cout << "| mesh | resolution | end points | junctions | joints | bones | joints per chain | curve points"
                " | points outside | max outside (% of diagonal) |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   std::vector<std::pair<std::string, std::vector<std::size_t>>> joints;
+  std::ostringstream rigid_motion_rows; // printed after the stability table
+  rigid_motion_rows << std::fixed << std::setprecision(2);
   for(const std::string& name : options.names)
   {
     const std::optional<Mesh> mesh = load_mesh(name, options.data_dir);
@@ -411,18 +424,20 @@ int main(int argc, char* argv[])
       inside.emplace(*mesh);
     joints.emplace_back(name, std::vector<std::size_t>());
     for(int resolution : options.resolutions)
-      joints.back().second.push_back(print_quality_row(name, *mesh, inside ? &*inside : nullptr, resolution));
+    {
+      const Quality_run run = print_quality_row(name, *mesh, inside ? &*inside : nullptr, resolution);
+      joints.back().second.push_back(run.joints.size());
+      if(options.rigid_motions > 0)
+        print_rigid_motion_row(rigid_motion_rows, name, *mesh, resolution, run, options.rigid_motions);
+    }
   }
   print_stability_table(joints, options.resolutions);
   if(options.rigid_motions > 0)
   {
     std::cout << "\ninvariance under " << options.rigid_motions
               << " random rigid motions\n\n| mesh | resolution | end points | end points moved, fewest | most"
-                 " | farthest joint (% of diagonal) |\n|---|---:|---:|---:|---:|---:|\n";
-    for(const auto& [name, counts] : joints)
-      if(const std::optional<Mesh> mesh = load_mesh(name, options.data_dir))
-        for(int resolution : options.resolutions)
-          print_rigid_motion_row(name, *mesh, resolution, options.rigid_motions);
+                 " | farthest joint (% of diagonal) |\n|---|---:|---:|---:|---:|---:|\n"
+              << rigid_motion_rows.str();
   }
   return 0;
 }
