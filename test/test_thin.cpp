@@ -195,6 +195,38 @@ BOOST_AUTO_TEST_CASE(the_simple_point_test_agrees_with_the_definition)
   BOOST_TEST(!test.is_simple((1u << 4) | (1u << 21))); // middle of a curve
 }
 
+BOOST_AUTO_TEST_CASE(the_p_simple_test_agrees_with_its_definition)
+{
+  // x is P-simple iff it stays simple whatever subset of P is deleted with it: every
+  // subset of P (at most 2^8 of them here) checked with is_simple(), which the test above
+  // checks against the definition.
+  const auto& test = gs::internal::Simple_point_test::instance();
+  std::mt19937 random(17);
+  int p_simple = 0, simple_not_p_simple = 0, checked = 0;
+  for(const std::uint32_t config : random_configurations(13, 3000))
+  {
+    std::uint32_t in_p = 0;
+    for(std::uint32_t bits = config; bits != 0 && gs::internal::bit_count(in_p) < 8; bits &= bits - 1)
+      if(random() % 3 == 0)
+        in_p |= bits & (~bits + 1u);
+    bool expected = true;
+    for(std::uint32_t deleted = in_p;; deleted = (deleted - 1) & in_p)
+    {
+      expected = expected && test.is_simple(config & ~deleted);
+      if(deleted == 0)
+        break;
+    }
+    BOOST_TEST(test.is_p_simple(config, in_p) == expected, "configuration " << config << ", P " << in_p);
+    p_simple += expected;
+    simple_not_p_simple += !expected && test.is_simple(config);
+    ++checked;
+  }
+  BOOST_TEST(p_simple > checked / 20);
+  BOOST_TEST(simple_not_p_simple > checked / 100); // the cases where P-simple is the stronger
+  BOOST_TEST(test.is_p_simple(1u << 4, 0u));          // a curve end, P empty: simple
+  BOOST_TEST(!test.is_p_simple(1u << 4, 1u << 4));    // a two-voxel piece both in P
+}
+
 BOOST_AUTO_TEST_CASE(the_peeling_tests_agree_with_their_definitions)
 {
   // object_is_split: T26 >= 2 (the object's voxels around the centre fall apart);

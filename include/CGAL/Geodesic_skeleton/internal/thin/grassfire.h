@@ -19,6 +19,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -39,11 +40,11 @@ constexpr double tip_growth_when_deleting = 0.3;
 constexpr std::ptrdiff_t ridge_reach_in_steps = 2;
 
 // The working state of the thinning over a padded box: bit 0 = in the set, bit 1 = queued,
-// bit 2 = deleted by the thinning.
+// bit 2 = deleted by the thinning, bit 3 = a candidate of the round (delete_p_simple()).
 class Grassfire
 {
 public:
-  static constexpr std::uint8_t IN = 1, QUEUED = 2, DELETED = 4;
+  static constexpr std::uint8_t IN = 1, QUEUED = 2, DELETED = 4, CANDIDATE = 8;
 
   Grassfire(const Grid_layout& layout, std::vector<std::uint8_t> state, const std::uint32_t* d2)
     : m_layout(layout), m_state(std::move(state)), m_d2(d2),
@@ -58,10 +59,13 @@ public:
 
   // Deletes simple points by increasing distance; returns the number deleted. A level is
   // burnt in rounds: first the round's candidates are chosen on the configuration at the
-  // start of the round (simple, and not a protected end point), then they are deleted one
-  // by one, each if still simple and not an end point that has become clearly medial
-  // (radius growth below tip_growth_when_deleting per unit step, as on a plateau of the distance): an end point
-  // that the round's own deletions expose at a corner of the shape is no tip, and goes.
+  // start of the round (simple, and not a protected end point); then those that are
+  // P-simple among them are deleted at once (delete_p_simple(), whatever the order); then
+  // the others are deleted one by one in index order, each if still simple and not an end
+  // point that has become clearly medial (radius growth below tip_growth_when_deleting per
+  // unit step, as on a plateau of the distance): an end point that the round's own
+  // deletions expose at a corner of the shape is no tip, and goes. Only that last step,
+  // where the set is two voxels thick and one of two voxels must go, depends on the order.
   std::size_t run(const std::vector<std::uint32_t>& order)
   {
     for(std::uint32_t i : order)
@@ -91,28 +95,66 @@ public:
             candidates[candidate_count++] = i;
         }
         round_size = 0;
+        removed += delete_p_simple(candidates.data(), candidate_count, round, round_size);
         for(std::size_t k = 0; k < candidate_count; ++k)
         {
           const std::uint32_t i = candidates[k];
+          if(!(m_state[i] & IN))
+            continue;
           const std::uint32_t config = configuration(i);
           if(protected_end(i, config, tip_growth_when_deleting) || !m_test.is_simple(config))
             continue;
           m_state[i] = DELETED;
           ++removed;
-          // Its neighbours in the set (the bits of its configuration) burn again.
-          for(std::uint32_t in = config; in != 0; in &= in - 1)
-          {
-            const std::size_t j = std::size_t(std::ptrdiff_t(i) + m_offsets[std::size_t(lowest_bit(in))]);
-            if(!(m_state[j] & QUEUED))
-            {
-              m_state[j] |= QUEUED;
-              round[round_size++] = std::uint32_t(j);
-            }
-          }
+          queue_neighbours(i, config, round, round_size);
         }
       }
     }
     return removed;
+  }
+
+  // Deletes at once the candidates that are P-simple for P the candidates (see
+  // Simple_point_test::is_p_simple()): the part of a round whose outcome does not depend on
+  // the order of the voxels, so that on a mirrored or rotated grid it deletes the mirrored
+  // or rotated voxels. Returns the number deleted; the candidates left are deleted one by
+  // one after it.
+  std::size_t delete_p_simple(const std::uint32_t* candidates, std::size_t candidate_count,
+                              std::vector<std::uint32_t>& round, std::size_t& round_size)
+  {
+    for(std::size_t k = 0; k < candidate_count; ++k)
+      m_state[candidates[k]] |= CANDIDATE;
+    m_p_simple.clear();
+    for(std::size_t k = 0; k < candidate_count; ++k)
+    {
+      const std::uint32_t i = candidates[k];
+      const std::pair<std::uint32_t, std::uint32_t> config = configurations(i);
+      // A candidate is simple (it was chosen on this very state): without a neighbour in P
+      // it is P-simple.
+      if(config.second == 0 || m_test.is_p_simple(config.first, config.second))
+        m_p_simple.emplace_back(i, config.first);
+    }
+    for(std::size_t k = 0; k < candidate_count; ++k)
+      m_state[candidates[k]] &= std::uint8_t(~CANDIDATE);
+    for(const auto& deleted : m_p_simple)
+      m_state[deleted.first] = DELETED;
+    for(const auto& deleted : m_p_simple)
+      queue_neighbours(deleted.first, deleted.second, round, round_size);
+    return m_p_simple.size();
+  }
+
+  // Queues the neighbours in the set of a deleted voxel i (the bits of `config`) to burn again.
+  void queue_neighbours(std::uint32_t i, std::uint32_t config, std::vector<std::uint32_t>& round,
+                        std::size_t& round_size)
+  {
+    for(std::uint32_t in = config; in != 0; in &= in - 1)
+    {
+      const std::size_t j = std::size_t(std::ptrdiff_t(i) + m_offsets[std::size_t(lowest_bit(in))]);
+      if((m_state[j] & IN) && !(m_state[j] & QUEUED))
+      {
+        m_state[j] |= QUEUED;
+        round[round_size++] = std::uint32_t(j);
+      }
+    }
   }
 
   bool deleted(std::size_t i) const { return (m_state[i] & DELETED) != 0; }
@@ -131,6 +173,21 @@ public:
               << (3 * row);
     }
     return (cube & 0x1FFFu) | ((cube >> 14) << 13);
+  }
+  // The configurations of the neighbours in the set and of those in the round's candidates
+  // (bit 3), read in one pass.
+  std::pair<std::uint32_t, std::uint32_t> configurations(std::size_t i) const
+  {
+    const std::uint8_t* centre = m_state.data() + i;
+    std::uint32_t in = 0, candidate = 0;
+    for(int row = 0; row < 9; ++row)
+    {
+      const std::uint8_t* r = centre + m_row_offsets[row];
+      const std::uint32_t bits = std::uint32_t(r[0]) | std::uint32_t(r[1]) << 8 | std::uint32_t(r[2]) << 16;
+      in |= ((bits & 1u) | (bits >> 7 & 2u) | (bits >> 14 & 4u)) << (3 * row);
+      candidate |= ((bits >> 3 & 1u) | (bits >> 10 & 2u) | (bits >> 17 & 4u)) << (3 * row);
+    }
+    return {(in & 0x1FFFu) | ((in >> 14) << 13), (candidate & 0x1FFFu) | ((candidate >> 14) << 13)};
   }
 
   // A curve end point on the medial axis (and not half of a 2-voxel piece), for a ridge
@@ -176,6 +233,7 @@ private:
   std::array<std::ptrdiff_t, 9> m_row_offsets{};
   std::array<double, 26> m_offset_length{};
   const Simple_point_test& m_test;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> m_p_simple; // delete_p_simple()'s voxels and configurations
 };
 
 // The indices of the voxels of `state` (bit 0) sorted by increasing d2, then index:

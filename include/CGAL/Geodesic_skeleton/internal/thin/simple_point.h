@@ -95,6 +95,36 @@ public:
     return cube != 0 && !grows_to(cube & (~cube + 1u), cube, cube, grow26);
   }
 
+  // Whether x stays simple whatever subset of its neighbours in P is deleted with it
+  // (a P-simple point, Bertrand 1995), for `object` the configuration of X and `in_p` that
+  // of P (a subset of `object`). The local characterization, with X \ P the object kept:
+  //   1. the kept object in N26*(x) is one 26-component;
+  //   2. T6(x, ~X) = 1;
+  //   3. every neighbour in P is 26-adjacent to a kept neighbour;
+  //   4. every face neighbour y in P keeps T6(x, ~X ∪ {y}) = 1.
+  // All P-simple points of P can be deleted at once without changing the topology, and
+  // which of them are P-simple does not depend on any order.
+  bool is_p_simple(std::uint32_t object, std::uint32_t in_p) const
+  {
+    const std::uint32_t kept = to_cube(object & ~in_p), p = to_cube(in_p);
+    if(kept == 0 || !grows_to(kept & (~kept + 1u), kept, kept, grow26) || (grow26(kept) & p) != p)
+      return false;
+    // The background's 6-component in N18* that holds a face neighbour: condition 2 holds
+    // iff it holds them all; then a face neighbour y in P keeps one component 6-adjacent to
+    // x iff y touches it (y itself is 6-adjacent to x, so alone it would be a second one).
+    const std::uint32_t cube = to_cube(object), background18 = ~cube & n18;
+    const std::uint32_t background_faces = background18 & faces;
+    if(background_faces == 0)
+      return false;
+    const std::uint32_t component = grown_component(background_faces & (~background_faces + 1u), background18, grow6);
+    if((component & background_faces) != background_faces)
+      return false;
+    for(std::uint32_t face = p & faces; face != 0; face &= face - 1)
+      if((grow6(face & (~face + 1u)) & component) == 0)
+        return false;
+    return true;
+  }
+
 private:
   Simple_point_test() = default;
 
@@ -127,6 +157,19 @@ private:
     s |= ((s << 1) & not_x0) | ((s >> 1) & not_x2);
     s |= ((s << 3) & not_y0) | ((s >> 3) & not_y2);
     return s | ((s << 9) & all) | (s >> 9);
+  }
+
+  // The whole component of `seed` inside `set`.
+  template <typename Grow>
+  static std::uint32_t grown_component(std::uint32_t seed, std::uint32_t set, Grow grow)
+  {
+    for(std::uint32_t component = seed;;)
+    {
+      const std::uint32_t grown = grow(component) & set;
+      if(grown == component)
+        return component;
+      component = grown;
+    }
   }
 
   // Grows the component of `seed` inside `set`; returns whether it covers `must_reach`
