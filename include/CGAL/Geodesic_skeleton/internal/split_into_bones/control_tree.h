@@ -112,8 +112,10 @@ Control_skeleton<Point> root_joint_graph(const Joint_graph<Point>& g)
       double eccentricity = 0;
       for(std::size_t k : part)
         eccentricity = std::max(eccentricity, sp.distance[k]);
-      const bool better = eccentricity < best - 1e-12 ||
-                          (eccentricity <= best + 1e-12 && g[j].radius > g[root].radius);
+      // Equal up to rounding (relative, so that it holds at any scale): the thicker wins.
+      const double rounding = 1e-9 * eccentricity;
+      const bool better = eccentricity < best - rounding ||
+                          (eccentricity <= best + rounding && g[j].radius > g[root].radius);
       if(better)
       {
         best = eccentricity;

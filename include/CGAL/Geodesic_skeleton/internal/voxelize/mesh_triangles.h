@@ -10,6 +10,7 @@
 
 #include <CGAL/Geodesic_skeleton/Voxel_frame.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_line_crossings.h>
+#include <CGAL/Geodesic_skeleton/internal/voxelize/polygon_triangles.h>
 #include <CGAL/Geodesic_skeleton/internal/voxelize/principal_frame.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -29,7 +30,8 @@ namespace Geodesic_skeleton {
 namespace internal {
 
 // The triangles of the faces of `mesh` (a face with more than three vertices is split into
-// a fan), with finite coordinates checked.
+// its n - 2 triangles by append_polygon_triangles(), in the face's order), with finite
+// coordinates checked.
 template <typename FaceGraph, typename VertexPointMap>
 std::vector<Triangle3> mesh_triangles(const FaceGraph& mesh, VertexPointMap vpm, const char* caller)
 {
@@ -44,6 +46,7 @@ std::vector<Triangle3> mesh_triangles(const FaceGraph& mesh, VertexPointMap vpm,
     return q;
   };
   std::vector<Vec3> corners;
+  std::vector<Corner_triple> polygon;
   for(auto f : faces(mesh))
   {
     const auto h = halfedge(f, mesh);
@@ -56,8 +59,10 @@ std::vector<Triangle3> mesh_triangles(const FaceGraph& mesh, VertexPointMap vpm,
     corners.clear();
     for(auto v : vertices_around_face(h, mesh))
       corners.push_back(corner(v));
-    for(std::size_t i = 1; i + 1 < corners.size(); ++i)
-      triangles.push_back(Triangle3{corners[0], corners[i], corners[i + 1]});
+    polygon.clear();
+    append_polygon_triangles(corners, polygon);
+    for(const Corner_triple& t : polygon)
+      triangles.push_back(Triangle3{corners[t[0]], corners[t[1]], corners[t[2]]});
   }
   if(triangles.empty())
     throw std::invalid_argument(std::string(caller) + ": the mesh has no faces");

@@ -34,8 +34,14 @@ namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
 
-// The frame and box of the grid: `resolution` voxels along the longest principal extent of
-// the mesh, the mesh centred in the box, and `margin` empty voxels all around.
+// The frame and box of the grid: voxels of 1 / `resolution` of the longest principal extent
+// of the mesh, an odd number of them along each axis (the extent's, or one more), the mesh
+// centred in the box, and `margin` empty voxels all around. With an odd count the centre of
+// the mesh's box is a voxel's centre, so a plane of mirror symmetry of the shape through it
+// runs through a layer of voxel centres, not between two layers: a part crossing it is
+// rasterised an odd number of voxels across, and its ridge is one voxel thick there, which
+// thinning keeps whatever its order of deletion (between two layers the ridge is two voxels
+// thick, and which of the two stays depends on that order).
 inline Voxel_frame grid_frame(const std::vector<Triangle3>& triangles, int resolution, int margin,
                               Voxel_box& box, const char* caller)
 {
@@ -58,7 +64,8 @@ inline Voxel_frame grid_frame(const std::vector<Triangle3>& triangles, int resol
   for(int a = 0; a < 3; ++a)
   {
     const double extent = hi[a] - lo[a];
-    const int n = (std::max)(1, int(std::ceil(extent / h - 1e-9)));
+    int n = (std::max)(1, int(std::ceil(extent / h - 1e-9)));
+    n += 1 - n % 2;
     const double local_origin = lo[a] - 0.5 * (n * h - extent) - margin * h;
     for(int c = 0; c < 3; ++c)
       origin[c] += local_origin * pf.axes[a][c];
