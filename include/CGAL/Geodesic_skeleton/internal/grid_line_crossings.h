@@ -333,6 +333,11 @@ constexpr double with_neighbours_half_width = 1.5;
 // per voxel along each axis (3: the lines at -1/3, 0 and 1/3 of a voxel's cross-section),
 // so that a part a third of a voxel thick is still met, for 9 lines per axis and voxel.
 constexpr int lines_per_voxel = 3;
+// The shortest inside piece of a line that inside_points_in_cubes() takes (voxels). A line
+// that grazes an edge or a corner of the surface crosses it twice at the same place up to
+// rounding: the piece between is a sliver whose midpoint lies on the surface, outside for
+// any other inside test (it put a curve point of bones.off on the surface at resolution 64).
+constexpr double shortest_inside_piece = 1e-6;
 
 // How inside_points_in_cubes() chooses among the inside pieces of its lines.
 enum class Inside_piece_choice { longest, nearest };
@@ -384,7 +389,7 @@ inline std::vector<Vec3> inside_points_in_cubes(const Grid_line_crossings& g, co
         winding += hits[l][k].sign;
         const double piece_from = (std::max)(from, hits[l][k].at);
         const double piece_to = (std::min)(to, hits[l][k + 1].at);
-        if(winding == 0 || !(piece_to > piece_from))
+        if(winding == 0 || !(piece_to - piece_from > shortest_inside_piece))
           continue;
         Vec3 q;
         q[axis] = 0.5 * (piece_from + piece_to);
