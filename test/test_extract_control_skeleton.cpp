@@ -75,8 +75,11 @@ BOOST_AUTO_TEST_CASE(demo_animals_give_one_tree_of_a_rig_s_size_inside_the_mesh)
 {
   // The elephant's mesh has three handles (V - E + F = -4); at the default resolution the
   // solid keeps two (the third's hole is about a voxel wide): two loops, each cut once.
+  // The cow's thin tail lies along its rump and is under the level of detail: 4 legs and
+  // the head (its sixth end was a stub one voxel long where the tail starts, which the
+  // snipping of the graph's end branches removes).
   struct Expected { const char* mesh; std::size_t min_bones, max_bones, min_ends, cut_bones; };
-  for(const Expected& x : {Expected{"cow.off", 15, 40, 6, 0}, Expected{"dino.off", 15, 40, 6, 0},
+  for(const Expected& x : {Expected{"cow.off", 15, 40, 5, 0}, Expected{"dino.off", 15, 40, 6, 0},
                            Expected{"triceratops.off", 15, 40, 6, 0}, Expected{"bull.off", 15, 40, 6, 0},
                            Expected{"camel.off", 15, 40, 6, 0}, Expected{"elephant.off", 15, 40, 6, 2}})
   {
@@ -97,9 +100,11 @@ BOOST_AUTO_TEST_CASE(demo_animals_give_one_tree_of_a_rig_s_size_inside_the_mesh)
 // The resolution is a sampling choice, not a modelling one (issue 12): doubling it must not
 // add a quarter more joints to a character's rig. Without the level-of-detail snipping
 // (limb_protrusion_factor 0) the cow goes from 33 joints to 46, the armadillo from 43 to 60.
+// Bear and homer went from 9 to 12 and 14 to 18 joints before the snipping looked at the
+// ends of the skeleton's graph too (stubs one voxel long that voxel degrees hide).
 BOOST_AUTO_TEST_CASE(a_rig_keeps_its_size_when_the_resolution_doubles)
 {
-  for(const char* name : {"cow.off", "dino.off", "armadillo.off", "man.off"})
+  for(const char* name : {"cow.off", "dino.off", "armadillo.off", "man.off", "bear.off", "homer.off"})
   {
     BOOST_TEST_CONTEXT(name)
     {

@@ -49,7 +49,9 @@ struct Pruning_report
 /// radius of its piece of the skeleton (a bump, a hoof's cleft, a sheet's rim: detail
 /// smaller than the level of detail of the rig), most spurious first, while the skeleton
 /// goes on past the junction. An end branch is traced through any lump of branched points
-/// that only two branches leave. Both thresholds are ratios of lengths of the shape, so
+/// that only two branches leave. When the voxels show no spur left, the same tests run on the
+/// end branches of the skeleton's graph as `to_graph()` makes it, which also has ends that
+/// voxel degrees hide (a voxel hanging on a lump, a tip that is a little triangle). Both thresholds are ratios of lengths of the shape, so
 /// that the same features are kept at every resolution that resolves them. The steps are
 /// described in the manual, section \ref manual_prune_method.
 ///
@@ -96,8 +98,9 @@ struct Pruning_report
 ///         out of range or a radius is negative or not finite.
 ///
 /// \b Complexity: O(N log N) for N skeleton voxels per round of snipping (one Dijkstra per
-/// region, over the region; each end branch traced and its protrusion measured once), a
-/// few rounds in practice.
+/// region, over the region; each end branch traced and its protrusion measured once; the
+/// graph's rounds also take O(B) time and memory for the B voxels of the skeleton's bounding
+/// box), a few rounds in practice.
 template <typename VoxelSet, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Pruning_report prune_skeleton(VoxelSet& skeleton,
                               const NamedParameters& np = CGAL::parameters::default_values())
@@ -140,7 +143,11 @@ Pruning_report prune_skeleton(VoxelSet& skeleton,
     report.removed_branched_points += pruned.removed_points;
     internal::Snipping snipped;
     if(factor > 0 || protrusion_factor > 0)
+    {
       snipped = internal::snip_spurious_branches_once(skeleton, radius, thresholds);
+      if(snipped.branches == 0) // what is left that the graph, not the voxels, shows as ends
+        snipped = internal::snip_spurious_graph_branches_once(skeleton, radius, thresholds);
+    }
     report.snipped_branches += snipped.branches;
     report.snipped_points += snipped.points;
     if(pruned.removed_points == 0 && snipped.branches == 0)

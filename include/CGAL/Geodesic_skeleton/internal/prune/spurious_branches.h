@@ -10,6 +10,8 @@
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
 #include <CGAL/Geodesic_skeleton/internal/prune/branched_regions.h>
 
+#include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
+#include <CGAL/Geodesic_skeleton/internal/to_graph/skeleton_adjacency.h>
 #include <CGAL/Geodesic_skeleton/internal/voxel_components.h>
 
 #include <algorithm>
@@ -85,8 +87,9 @@ bool walk_to_junction(const VoxelSet& skeleton, End_branch& branch)
 // the cluster closes a little triangle inside the junction and starts no branch.
 struct Junction_cluster
 {
-  std::vector<Voxel_key> voxels; // sorted
-  std::vector<Voxel_key> exits;  // sorted
+  std::vector<Voxel_key> voxels;   // sorted
+  std::vector<Voxel_key> exits;    // sorted
+  std::vector<Voxel_key> tucked_in; // next to the cluster, no exit: all their neighbours in it
 };
 
 template <typename VoxelSet>
@@ -125,10 +128,10 @@ Junction_cluster junction_cluster(const VoxelSet& skeleton, const Voxel_key& j)
       if(skeleton.contains(n) && cluster.count(n) == 0)
         leads_out = true;
     }
-    if(leads_out)
-      result.exits.push_back(e);
+    (leads_out ? result.exits : result.tucked_in).push_back(e);
   }
   std::sort(result.exits.begin(), result.exits.end());
+  std::sort(result.tucked_in.begin(), result.tucked_in.end());
   return result;
 }
 
@@ -159,7 +162,11 @@ bool trace_end_branch(const VoxelSet& skeleton, const Voxel_key& end, End_branch
     const Voxel_key other = cluster.exits[0] == last ? cluster.exits[1] : cluster.exits[0];
     if(other == last || std::find(branch.voxels.begin(), branch.voxels.end(), other) != branch.voxels.end())
       return false; // the lump closes a loop onto the branch
+    // The voxels tucked into the lump go with it: they would be left alone when the branch
+    // is snipped.
     for(const Voxel_key& k : cluster.voxels)
+      branch.voxels.push_back(k);
+    for(const Voxel_key& k : cluster.tucked_in)
       branch.voxels.push_back(k);
     branch.length += std::sqrt(double(squared_distance_between(last, other))) - step_length(last, branch.junction);
     branch.voxels.push_back(other);
@@ -233,6 +240,43 @@ struct Snipping
   std::size_t branches = 0, points = 0;
 };
 
+// The branches among `branches` that `thresholds` calls spurs, with their spuriousness,
+// the most spurious first (ties by end voxel).
+template <typename Radius>
+std::vector<End_branch> spurs_among(std::vector<End_branch> branches, const Radius& radius,
+                                    const Spur_thresholds& thresholds)
+{
+  std::vector<End_branch> spurs;
+  for(End_branch& branch : branches)
+  {
+    branch.spuriousness = spuriousness_of(branch, radius, thresholds);
+    if(branch.spuriousness < 1)
+      spurs.push_back(std::move(branch));
+  }
+  std::sort(spurs.begin(), spurs.end(), [](const End_branch& a, const End_branch& b) {
+    return std::tie(a.spuriousness, a.voxels.front()) < std::tie(b.spuriousness, b.voxels.front());
+  });
+  return spurs;
+}
+
+// Snips the `spurs` in their order, each one that `may_snip(spur)`, asked after the snips
+// before it, allows.
+template <typename VoxelSet, typename MaySnip>
+Snipping snip_in_order(VoxelSet& skeleton, const std::vector<End_branch>& spurs, MaySnip may_snip)
+{
+  Snipping result;
+  for(const End_branch& spur : spurs)
+  {
+    if(!may_snip(spur))
+      continue;
+    for(const Voxel_key& k : spur.voxels)
+      skeleton.erase(k);
+    ++result.branches;
+    result.points += spur.voxels.size();
+  }
+  return result;
+}
+
 // One round: snips the end branches that `thresholds` calls spurs, the most spurious
 // first, each only while three branches or more leave its junction.
 template <typename VoxelSet, typename Radius>
@@ -245,33 +289,90 @@ Snipping snip_spurious_branches_once(VoxelSet& skeleton, const Radius& radius, c
   });
   std::sort(ends.begin(), ends.end());
 
-  std::vector<End_branch> spurs;
+  std::vector<End_branch> branches;
   for(const Voxel_key& end : ends)
   {
     End_branch branch;
-    if(!trace_end_branch(skeleton, end, branch))
-      continue;
-    branch.spuriousness = spuriousness_of(branch, radius, thresholds);
-    if(branch.spuriousness < 1)
-      spurs.push_back(std::move(branch));
+    if(trace_end_branch(skeleton, end, branch))
+      branches.push_back(std::move(branch));
   }
-  std::sort(spurs.begin(), spurs.end(), [](const End_branch& a, const End_branch& b) {
-    return std::tie(a.spuriousness, a.voxels.front()) < std::tie(b.spuriousness, b.voxels.front());
-  });
-
-  Snipping result;
-  for(const End_branch& spur : spurs)
-  {
+  return snip_in_order(skeleton, spurs_among(std::move(branches), radius, thresholds), [&](const End_branch& spur) {
     // Earlier snips of this round may have changed this branch's junction.
-    if(!skeleton.contains(spur.voxels.front()) || !skeleton.contains(spur.junction) ||
-       branches_at_junction(skeleton, spur.junction) < 3)
+    return skeleton.contains(spur.voxels.front()) && skeleton.contains(spur.junction) &&
+           branches_at_junction(skeleton, spur.junction) >= 3;
+  });
+}
+
+// The end branches of the skeleton's graph, the one to_graph() makes (26-adjacency without
+// junction triangles), and the degree of their junctions in it. A graph end branch runs from
+// a node of degree 1 along nodes of degree 2 up to (not including) a node of degree 3 or
+// more. The voxel tracing above misses two kinds of them, which the graph, and so the
+// control skeleton, turns into end points: a voxel hanging on a lump of branched points (all
+// its neighbours in the lump) and a branch whose tip is a little triangle (its end voxel has
+// two neighbours). Both are more frequent the finer the grid.
+struct Graph_end_branches
+{
+  std::vector<End_branch> branches;
+  std::unordered_map<Voxel_key, std::size_t, Voxel_key_hash> junction_degree;
+};
+
+template <typename VoxelSet>
+Graph_end_branches graph_end_branches(const VoxelSet& skeleton)
+{
+  Graph_end_branches result;
+  if(skeleton.size() == 0)
+    return result;
+  const Skeleton_adjacency graph =
+      skeleton_adjacency(skeleton, Grid_layout(require_nonempty_box(skeleton, 0, "prune_skeleton")));
+  std::vector<std::vector<int>> around(graph.nodes.size());
+  for(const auto& [a, b] : graph.edges)
+  {
+    around[std::size_t(a)].push_back(b);
+    around[std::size_t(b)].push_back(a);
+  }
+  const auto key = [&](int v) { return graph.nodes[std::size_t(v)]; };
+  const auto degree = [&](int v) { return around[std::size_t(v)].size(); };
+  for(int end = 0; end < int(graph.nodes.size()); ++end)
+  {
+    if(degree(end) != 1)
       continue;
-    for(const Voxel_key& k : spur.voxels)
-      skeleton.erase(k);
-    ++result.branches;
-    result.points += spur.voxels.size();
+    End_branch branch;
+    branch.voxels.push_back(key(end));
+    int previous = end, current = around[std::size_t(end)][0];
+    branch.length = step_length(key(end), key(current));
+    while(degree(current) == 2)
+    {
+      const std::vector<int>& next = around[std::size_t(current)];
+      const int ahead = next[0] == previous ? next[1] : next[0];
+      branch.voxels.push_back(key(current));
+      branch.length += step_length(key(current), key(ahead));
+      previous = current;
+      current = ahead;
+    }
+    if(degree(current) < 3)
+      continue; // a path component: no junction
+    branch.junction = key(current);
+    result.junction_degree[branch.junction] = degree(current);
+    result.branches.push_back(std::move(branch));
   }
   return result;
+}
+
+// One round over the graph's end branches (graph_end_branches()): snips those that
+// `thresholds` calls spurs, the most spurious first, each only while its junction keeps
+// three branches or more in the graph.
+template <typename VoxelSet, typename Radius>
+Snipping snip_spurious_graph_branches_once(VoxelSet& skeleton, const Radius& radius,
+                                           const Spur_thresholds& thresholds)
+{
+  Graph_end_branches graph = graph_end_branches(skeleton);
+  return snip_in_order(skeleton, spurs_among(std::move(graph.branches), radius, thresholds), [&](const End_branch& spur) {
+    std::size_t& branches = graph.junction_degree[spur.junction];
+    if(branches < 3)
+      return false;
+    --branches;
+    return true;
+  });
 }
 
 } // namespace internal
