@@ -98,9 +98,8 @@ struct Pruning_report
 ///         out of range or a radius is negative or not finite.
 ///
 /// \b Complexity: O(N log N) for N skeleton voxels per round of snipping (one Dijkstra per
-/// region, over the region; each end branch traced and its protrusion measured once; the
-/// graph's rounds also take O(B) time and memory for the B voxels of the skeleton's bounding
-/// box), a few rounds in practice.
+/// region, over the region; each end branch traced and its protrusion measured once), a
+/// few rounds in practice; O(N) extra memory.
 template <typename VoxelSet, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Pruning_report prune_skeleton(VoxelSet& skeleton,
                               const NamedParameters& np = CGAL::parameters::default_values())

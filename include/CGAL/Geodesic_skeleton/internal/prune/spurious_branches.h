@@ -10,7 +10,6 @@
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
 #include <CGAL/Geodesic_skeleton/internal/prune/branched_regions.h>
 
-#include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
 #include <CGAL/Geodesic_skeleton/internal/to_graph/skeleton_adjacency.h>
 #include <CGAL/Geodesic_skeleton/internal/voxel_components.h>
 
@@ -322,8 +321,7 @@ Graph_end_branches graph_end_branches(const VoxelSet& skeleton)
   Graph_end_branches result;
   if(skeleton.size() == 0)
     return result;
-  const Skeleton_adjacency graph =
-      skeleton_adjacency(skeleton, Grid_layout(require_nonempty_box(skeleton, 0, "prune_skeleton")));
+  const Skeleton_adjacency graph = skeleton_adjacency(skeleton);
   std::vector<std::vector<int>> around(graph.nodes.size());
   for(const auto& [a, b] : graph.edges)
   {

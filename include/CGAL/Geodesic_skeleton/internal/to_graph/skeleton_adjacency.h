@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -28,27 +29,18 @@ struct Skeleton_adjacency
   std::vector<std::pair<int, int>> edges;
 };
 
-// `layout` covers the skeleton's voxels (its box may be larger).
-template <typename VoxelSet>
-Skeleton_adjacency skeleton_adjacency(const VoxelSet& skeleton, const Grid_layout& layout)
+// `node_of(k)` is the index of the node of voxel `k` in `nodes` (sorted), or -1.
+template <typename NodeOf>
+Skeleton_adjacency skeleton_adjacency(std::vector<Voxel_key> nodes, const NodeOf& node_of)
 {
   Skeleton_adjacency graph;
-  graph.nodes.reserve(skeleton.size());
-  skeleton.for_each([&](const Voxel_key& k) { graph.nodes.push_back(k); });
-  std::sort(graph.nodes.begin(), graph.nodes.end());
-  std::vector<std::int32_t> node_at(layout.volume(), -1);
-  for(std::size_t v = 0; v < graph.nodes.size(); ++v)
-    node_at[layout.index(graph.nodes[v])] = std::int32_t(v);
-
+  graph.nodes = std::move(nodes);
   // Each adjacency once: the 13 offsets after the centre in neighbourhood order.
   std::vector<std::pair<int, int>> all;
   for(std::size_t v = 0; v < graph.nodes.size(); ++v)
     for(int b = 13; b < 26; ++b)
     {
-      const Voxel_key n = graph.nodes[v] + neighbourhood_26()[b];
-      if(!layout.box.contains(n))
-        continue;
-      const std::int32_t w = node_at[layout.index(n)];
+      const std::int32_t w = node_of(graph.nodes[v] + neighbourhood_26()[b]);
       if(w >= 0)
         all.emplace_back((std::min)(int(v), int(w)), (std::max)(int(v), int(w)));
     }
@@ -57,6 +49,45 @@ Skeleton_adjacency skeleton_adjacency(const VoxelSet& skeleton, const Grid_layou
     if(kept[e])
       graph.edges.push_back(all[e]);
   return graph;
+}
+
+template <typename VoxelSet>
+std::vector<Voxel_key> sorted_voxels(const VoxelSet& skeleton)
+{
+  std::vector<Voxel_key> nodes;
+  nodes.reserve(skeleton.size());
+  skeleton.for_each([&](const Voxel_key& k) { nodes.push_back(k); });
+  std::sort(nodes.begin(), nodes.end());
+  return nodes;
+}
+
+// With a dense index over `layout`, which covers the skeleton's voxels (its box may be
+// larger): 4 bytes per voxel of the box.
+template <typename VoxelSet>
+Skeleton_adjacency skeleton_adjacency(const VoxelSet& skeleton, const Grid_layout& layout)
+{
+  std::vector<Voxel_key> nodes = sorted_voxels(skeleton);
+  std::vector<std::int32_t> node_at(layout.volume(), -1);
+  for(std::size_t v = 0; v < nodes.size(); ++v)
+    node_at[layout.index(nodes[v])] = std::int32_t(v);
+  return skeleton_adjacency(std::move(nodes), [&](const Voxel_key& k) {
+    return layout.box.contains(k) ? node_at[layout.index(k)] : std::int32_t(-1);
+  });
+}
+
+// With a hash index: memory proportional to the skeleton, not to its box.
+template <typename VoxelSet>
+Skeleton_adjacency skeleton_adjacency(const VoxelSet& skeleton)
+{
+  std::vector<Voxel_key> nodes = sorted_voxels(skeleton);
+  std::unordered_map<Voxel_key, std::int32_t, Voxel_key_hash> node_at;
+  node_at.reserve(nodes.size());
+  for(std::size_t v = 0; v < nodes.size(); ++v)
+    node_at.emplace(nodes[v], std::int32_t(v));
+  return skeleton_adjacency(std::move(nodes), [&](const Voxel_key& k) {
+    const auto at = node_at.find(k);
+    return at != node_at.end() ? at->second : std::int32_t(-1);
+  });
 }
 
 } // namespace internal
