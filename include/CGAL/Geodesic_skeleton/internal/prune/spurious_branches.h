@@ -319,8 +319,6 @@ template <typename VoxelSet>
 Graph_end_branches graph_end_branches(const VoxelSet& skeleton)
 {
   Graph_end_branches result;
-  if(skeleton.size() == 0)
-    return result;
   const Skeleton_adjacency graph = skeleton_adjacency(skeleton);
   std::vector<std::vector<int>> around(graph.nodes.size());
   for(const auto& [a, b] : graph.edges)
