@@ -111,7 +111,9 @@ Pruning_counts pruning_counts(const Mesh& mesh, int resolution)
   gs::Dense_voxel_grid solid;
   gs::voxelize(mesh, solid, gs::parameters::resolution(resolution));
   const gs::Voxel_distance_field distances = gs::distance_transform(solid);
-  gs::thin(solid, distances);
+  gs::Sheet_radii sheet_radii;
+  gs::thin(solid, distances,
+           gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(sheet_radii)));
   gs::Sparse_voxel_set skeleton;
   skeleton.reset(solid.frame(), solid.bounding_box());
   solid.for_each([&](const gs::Voxel_key& k) { skeleton.insert(k); });
@@ -121,8 +123,8 @@ Pruning_counts pruning_counts(const Mesh& mesh, int resolution)
   c.before = skeleton.size();
   c.branched_before = gs::count_skeleton_points(skeleton).branched_connection;
 
-  // The MAT radius map that extract_control_skeleton() gives prune_skeleton().
-  const auto radius = gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(distances));
+  // The radius map that extract_control_skeleton() gives prune_skeleton().
+  const auto radius = gs::parameters::mat_radius_map(gs::skeleton_radius_in_voxels_map(distances, sheet_radii));
   gs::Sparse_voxel_set algorithm_1 = skeleton;
   const gs::Pruning_report report_1 =
       gs::prune_skeleton(algorithm_1, gs::parameters::combine(radius, gs::parameters::spur_length_factor(0.0),

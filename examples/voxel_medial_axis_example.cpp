@@ -11,6 +11,7 @@
 
 #include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
+#include <CGAL/Geodesic_skeleton/Skeleton_radius_in_voxels_map.h>
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
 #include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>
@@ -24,6 +25,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh.h>
+
+#include <boost/property_map/property_map.hpp>
 
 #include <cmath>
 #include <cstdlib>
@@ -62,8 +65,11 @@ int main(int argc, char* argv[])
     // 2. The squared distance of every voxel to the outside: the MAT radius function.
     const GS::Voxel_distance_field distances = GS::distance_transform(solid);
 
-    // 3. The grassfire: a one-voxel-thick curve skeleton with the solid's topology.
-    GS::thin(solid, distances);
+    // 3. The grassfire: a one-voxel-thick curve skeleton with the solid's topology, and
+    //    the sheet radius of its voxels (the half width of a thin sheet, measured in it).
+    GS::Sheet_radii sheet_radii;
+    GS::thin(solid, distances,
+             GS::parameters::sheet_radius_map(boost::associative_property_map<GS::Sheet_radii>(sheet_radii)));
     GS::Sparse_voxel_set skeleton;
     skeleton.reset(solid.frame(), solid.bounding_box());
     solid.for_each([&](const GS::Voxel_key& k) { skeleton.insert(k); });
@@ -72,9 +78,10 @@ int main(int argc, char* argv[])
     // 4. The loops that parts closer than a voxel made, which the mesh has no handle for.
     const std::size_t cut = GS::cut_spurious_cycles(skeleton, mesh);
 
-    // 5. The paper's pruning, with the MAT radius (in voxels) for the snipping of twigs.
-    const GS::Pruning_report pruning =
-        GS::prune_skeleton(skeleton, GS::parameters::mat_radius_map(GS::mat_radius_in_voxels_map(distances)));
+    // 5. The paper's pruning; twigs are snipped by the MAT radius (in voxels), or in a
+    //    thin sheet by its half width.
+    const GS::Pruning_report pruning = GS::prune_skeleton(
+        skeleton, GS::parameters::mat_radius_map(GS::skeleton_radius_in_voxels_map(distances, sheet_radii)));
 
     // 6. The curve skeleton graph: points in the mesh's coordinates, radii, mesh vertices.
     GS::Curve_skeleton<Point, vertex_descriptor> curve;

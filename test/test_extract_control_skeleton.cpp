@@ -503,13 +503,16 @@ BOOST_AUTO_TEST_CASE(the_public_stages_composed_by_hand_give_the_same_skeleton)
       gs::voxelize(mesh, solid, gs::parameters::voxelized_surface_output(&surface));
       const auto with_surface = gs::parameters::voxelized_surface(&std::as_const(surface));
       const gs::Voxel_distance_field distances = gs::distance_transform(solid);
-      gs::thin(solid, distances);
+      gs::Sheet_radii sheet_radii; // a thin sheet's half width, for the pruning
+      gs::thin(solid, distances,
+               gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(sheet_radii)));
       gs::Sparse_voxel_set skeleton;
       skeleton.reset(solid.frame(), solid.bounding_box());
       solid.for_each([&](const gs::Voxel_key& k) { skeleton.insert(k); });
       gs::remove_small_pieces(skeleton, distances);
       const std::size_t cut = gs::cut_spurious_cycles(skeleton, mesh, with_surface);
-      gs::prune_skeleton(skeleton, gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(distances)));
+      gs::prune_skeleton(skeleton,
+                         gs::parameters::mat_radius_map(gs::skeleton_radius_in_voxels_map(distances, sheet_radii)));
       Skeleton curve;
       gs::to_graph(skeleton, distances, mesh, curve, with_surface);
       gs::smooth_skeleton(curve);

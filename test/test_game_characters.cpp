@@ -210,6 +210,46 @@ BOOST_AUTO_TEST_CASE(two_characters_keep_two_skeletons)
   BOOST_TEST(control[boost::graph_bundle].roots.size() == 2u);
 }
 
+// A cape, a fin or a wing: a thin plate (about a voxel thick at the default resolution)
+// with a ragged rim, made as an artist would, of overlapping boxes (the plate and a tab every
+// sixth of its length along each edge). Every tab grows a twig to the plate's middle line
+// in the thinning; judged by the plate's half thickness they are tens of radii long, by its
+// half width (the sheet radius that thin() measures) they are spurs. The rig is one chain
+// along the middle of the plate.
+BOOST_AUTO_TEST_CASE(a_thin_plate_with_a_ragged_rim_gets_one_chain)
+{
+  const double length = 60, width = 30, thickness = 1.2;
+  test::Soup s = test::box(0, 0, 0, length, width, thickness);
+  for(double x = 1; x + 2 < length; x += 6)
+  {
+    test::append(s, test::box(x, -2, 0, x + 2, 0.5, thickness));
+    test::append(s, test::box(x, width - 0.5, 0, x + 2, width + 2, thickness));
+  }
+  for(double y = 1; y + 2 < width; y += 6)
+  {
+    test::append(s, test::box(-2, y, 0, 0.5, y + 2, thickness));
+    test::append(s, test::box(length - 0.5, y, 0, length + 2, y + 2, thickness));
+  }
+  const Mesh mesh = test::mesh_of<Mesh>(s);
+  Control control;
+  const gs::Control_skeleton_report report = gs::extract_control_skeleton(mesh, control);
+  BOOST_TEST_MESSAGE("ragged plate: " << report.thinned.end_points << " ends after thinning, "
+                                      << report.pruned.end_points << " after pruning");
+  BOOST_TEST(report.thinned.end_points > 10u); // the tabs' twigs
+  BOOST_TEST(report.pruned.end_points == 2u);
+  BOOST_TEST(report.pruned.junctions == 0u);
+  BOOST_TEST(control[boost::graph_bundle].roots.size() == 1u);
+  // The chain runs along the middle of the plate, over half its length or more.
+  double min_x = length, max_x = 0;
+  for(const auto& j : test::joints(control))
+  {
+    BOOST_TEST(std::abs(j.point.y() - width / 2) <= 0.1 * width);
+    min_x = std::min(min_x, j.point.x());
+    max_x = std::max(max_x, j.point.x());
+  }
+  BOOST_TEST(max_x - min_x >= 0.5 * length);
+}
+
 BOOST_AUTO_TEST_CASE(remove_small_pieces_removes_exactly_the_small_ones)
 {
   // Three balls of radius 1, 0.5 and 0.2: at fraction 0.05 only the smallest (0.8 % of the

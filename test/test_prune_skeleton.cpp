@@ -2,6 +2,7 @@
 // CGAL/Geodesic_skeleton/prune_skeleton.h (the paper's Algorithm 1 and the snipping of
 // spurious branches), on hand-made voxel skeletons and on both VoxelSet models.
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
+#include <CGAL/Geodesic_skeleton/Skeleton_radius_in_voxels_map.h>
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
 #include <CGAL/Geodesic_skeleton/prune_skeleton.h>
@@ -19,7 +20,6 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <boost/mpl/list.hpp>
-#include <boost/property_map/function_property_map.hpp>
 #include <boost/property_map/property_map.hpp>
 #include <boost/test/unit_test.hpp>
 
@@ -412,19 +412,55 @@ struct Pruned_mesh_skeleton
     gs::voxelize(mesh, voxels, gs::parameters::combine(gs::parameters::keep_surface_voxels(keep_surface_voxels),
                                                        gs::parameters::resolution(resolution)));
     const gs::Voxel_distance_field field = gs::distance_transform(voxels);
-    gs::thin(voxels, field);
+    gs::Sheet_radii sheet_radii;
+    gs::thin(voxels, field,
+             gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(sheet_radii)));
     thinned_points = gs::count_skeleton_points(voxels);
     gs::Curve_skeleton<Mesh::Point, Mesh::Vertex_index> graph;
     gs::to_graph(voxels, field, mesh, graph);
     thinned = gs::skeleton_statistics(graph);
-    const auto radius = [&field](const Voxel_key& k) { return field.radius(k) / field.frame().voxel_size(); };
-    gs::prune_skeleton(voxels, gs::parameters::mat_radius_map(
-                                   boost::make_function_property_map<Voxel_key, double>(radius)));
+    // As extract_control_skeleton() prunes: by the MAT radius, or a sheet's half width.
+    gs::prune_skeleton(voxels, gs::parameters::mat_radius_map(gs::skeleton_radius_in_voxels_map(field, sheet_radii)));
     pruned_points = gs::count_skeleton_points(voxels);
     gs::to_graph(voxels, field, mesh, graph);
     pruned = gs::skeleton_statistics(graph);
   }
 };
+
+// A thin plate (one or three voxels thick) with bumps along its rim, as a wing or a fin
+// voxelizes: thinning burns it from the rim like a fire in the plane, and every bump leaves
+// an end point (its medial ball, of the plate's half thickness, is maximal). Judged by
+// that MAT radius, the twigs from the bumps to the middle line are tens of radii long and
+// stay (20 end points here); judged by the plate's half width, which thin() measures (the
+// sheet radius), they are spurs, and the middle line is left.
+BOOST_AUTO_TEST_CASE_TEMPLATE(a_thin_sheet_is_pruned_by_its_width, VoxelSet, Voxel_set_models)
+{
+  const int length = 60, width = 30, bump_period = 6;
+  for(int thickness : {1, 3})
+  {
+    VoxelSet plate;
+    plate.reset(gs::Voxel_frame(), gs::Voxel_box{Voxel_key{-3, -3, 0}, Voxel_key{length + 3, width + 3, thickness}});
+    for(int z = 0; z < thickness; ++z)
+      for(int y = -2; y < width + 2; ++y)
+        for(int x = -2; x < length + 2; ++x)
+        {
+          const bool in_x = x >= 0 && x < length, in_y = y >= 0 && y < width;
+          const bool bump = (in_x && !in_y && x % bump_period < 2) || (in_y && !in_x && y % bump_period < 2);
+          if((in_x && in_y) || bump)
+            plate.insert(Voxel_key{x, y, z});
+        }
+    const gs::Voxel_distance_field distances = gs::distance_transform(plate);
+    gs::Sheet_radii sheet_radii;
+    gs::thin(plate, distances,
+             gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(sheet_radii)));
+    VoxelSet by_thickness = plate;
+    gs::prune_skeleton(by_thickness, gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(distances)));
+    gs::prune_skeleton(plate, gs::parameters::mat_radius_map(gs::skeleton_radius_in_voxels_map(distances, sheet_radii)));
+    BOOST_TEST(gs::count_skeleton_points(by_thickness).end > 10u, "thickness " << thickness);
+    BOOST_TEST(gs::count_skeleton_points(plate).end <= 3u, "thickness " << thickness);
+    BOOST_TEST(gs::count_skeleton_points(plate).total() >= std::size_t(length - width), "thickness " << thickness);
+  }
+}
 
 BOOST_AUTO_TEST_CASE(pruning_keeps_the_components_and_the_handles_of_real_shapes)
 {

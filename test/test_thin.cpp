@@ -1,5 +1,6 @@
 // Specification of CGAL/Geodesic_skeleton/thin.h (and of its simple-point test).
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
+#include <CGAL/Geodesic_skeleton/Skeleton_radius_in_voxels_map.h>
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/internal/thin/simple_point.h>
@@ -8,6 +9,7 @@
 #include <Geodesic_skeleton_test/voxel_skeleton.h>
 
 #include <boost/mpl/list.hpp>
+#include <boost/property_map/property_map.hpp>
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -326,6 +328,46 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(a_bar_thins_to_its_axis, VoxelSet, Voxel_set_model
   BOOST_TEST(min_x <= 7); // ends within about a radius of the caps
   BOOST_TEST(max_x >= 52);
   BOOST_TEST(test::components_26(s) == 1);
+}
+
+// The sheet radius (thin()'s sheet_radius_map): in a sheet one voxel thick, where the MAT
+// radius is half a voxel everywhere, the kept middle line gets the sheet's half width, the
+// number of rounds its level burnt from the rim; in a bar, whose levels are shells, nothing.
+BOOST_AUTO_TEST_CASE_TEMPLATE(thin_measures_the_half_width_of_a_thin_sheet, VoxelSet, Voxel_set_models)
+{
+  const int length = 60, width = 30;
+  VoxelSet sheet = voxels_where<VoxelSet>(gs::Voxel_box{gs::Voxel_key{0, 0, 0}, gs::Voxel_key{length, width, 1}},
+                                          [](int, int, int) { return true; });
+  const gs::Voxel_distance_field sheet_distances = gs::distance_transform(sheet);
+  gs::Sheet_radii radii;
+  gs::thin(sheet, sheet_distances,
+           gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(radii)));
+  BOOST_TEST(radii.size() == sheet.size()); // one radius per voxel kept
+  const auto radius = gs::skeleton_radius_in_voxels_map(sheet_distances, radii);
+  int middle = 0;
+  sheet.for_each([&](const gs::Voxel_key& k) {
+    BOOST_TEST(get(gs::mat_radius_in_voxels_map(sheet_distances), k) < 1.);
+    if(k.x < 20 || k.x >= 40)
+      return;
+    ++middle;
+    BOOST_TEST(std::abs(k.y - (width - 1) / 2.) <= 1.);
+    BOOST_TEST(radii.at(k) >= width / 2. - 2.);
+    BOOST_TEST(radii.at(k) <= width / 2. + 1.);
+    BOOST_TEST(get(radius, k) == radii.at(k)); // the larger of the two radii
+  });
+  BOOST_TEST(middle == 20); // one voxel per column
+
+  VoxelSet bar = voxels_where<VoxelSet>(gs::Voxel_box{gs::Voxel_key{0, -7, -7}, gs::Voxel_key{40, 8, 8}},
+                                        [](int, int y, int z) { return y * y + z * z <= 25; });
+  const gs::Voxel_distance_field bar_distances = gs::distance_transform(bar);
+  radii.clear();
+  gs::thin(bar, bar_distances, gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(radii)));
+  BOOST_TEST(radii.size() == bar.size());
+  bar.for_each([&](const gs::Voxel_key& k) {
+    BOOST_TEST(radii.at(k) <= 1.);
+    BOOST_TEST(get(gs::skeleton_radius_in_voxels_map(bar_distances, radii), k) ==
+               get(gs::mat_radius_in_voxels_map(bar_distances), k));
+  });
 }
 
 BOOST_AUTO_TEST_CASE(both_models_give_the_same_skeleton)

@@ -30,6 +30,7 @@
 #include <CGAL/Geodesic_skeleton/voxelize.h>
 #include <CGAL/Geodesic_skeleton/remove_small_pieces.h>
 #include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
+#include <CGAL/Geodesic_skeleton/Skeleton_radius_in_voxels_map.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/thin.h>
 #include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>

@@ -10,6 +10,7 @@
 #include <CGAL/Geodesic_skeleton/Control_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
+#include <CGAL/Geodesic_skeleton/Skeleton_radius_in_voxels_map.h>
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
 #include <CGAL/Geodesic_skeleton/Voxelized_surface.h>
 #include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>
@@ -162,6 +163,11 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 /// average) and `split_into_bones()` (joints and bones, rooted at the most central
 /// junction).
 ///
+/// `thin()` also records the sheet radius of the voxels it keeps (its `sheet_radius_map`),
+/// and `prune_skeleton()` judges each voxel by the larger of its MAT radius and its sheet
+/// radius (`skeleton_radius_in_voxels_map()`), so that the twigs of a thin sheet (a wing, a
+/// fin, a plate) are pruned by the sheet's width, not its thickness.
+///
 /// Between `thin()` and `prune_skeleton()`, `remove_small_pieces()` removes the skeletons
 /// of the detached pieces whose solid is smaller than `small_piece_fraction` of the largest
 /// (a character's loose eyes or teeth): their mesh vertices map to the nearest point of the
@@ -308,7 +314,10 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   const Voxel_distance_field distances = distance_transform(solid, np);
   clock.finished("distance_transform");
 
-  thin(solid, distances, np);
+  // The sheet radii let pruning judge the twigs of a thin sheet by its width.
+  Sheet_radii sheet_radii;
+  thin(solid, distances,
+       parameters::combine(parameters::sheet_radius_map(boost::associative_property_map<Sheet_radii>(sheet_radii)), np));
   Sparse_voxel_set skeleton;
   skeleton.reset(solid.frame(), solid.bounding_box());
   solid.for_each([&](const Voxel_key& k) { skeleton.insert(k); });
@@ -332,7 +341,8 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   clock.finished("cut_spurious_cycles");
 
   report.pruning =
-      prune_skeleton(skeleton, parameters::combine(parameters::mat_radius_map(mat_radius_in_voxels_map(distances)), np));
+      prune_skeleton(skeleton, parameters::combine(
+                                   parameters::mat_radius_map(skeleton_radius_in_voxels_map(distances, sheet_radii)), np));
   clock.finished("prune");
 
   Skeleton curve;

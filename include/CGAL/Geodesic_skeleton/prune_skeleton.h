@@ -70,7 +70,10 @@ struct Pruning_report
 ///   \cgalParamNBegin{mat_radius_map}
 ///     \cgalParamDescription{the radius of the medial axis transform at each skeleton voxel,
 ///                           in voxels, e.g. the square root of the squared distance
-///                           transform (package parameter)}
+///                           transform (`mat_radius_in_voxels_map()`); in a thin sheet, better
+///                           the sheet's half width that `thin()` measures
+///                           (`skeleton_radius_in_voxels_map()`, which
+///                           `extract_control_skeleton()` gives) (package parameter)}
 ///     \cgalParamType{a model of `ReadablePropertyMap` with `Voxel_key` as key type and a
 ///                    number as value type}
 ///     \cgalParamDefault{1 voxel everywhere, which makes the snipping threshold an absolute

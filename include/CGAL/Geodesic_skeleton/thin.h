@@ -54,9 +54,27 @@ namespace Geodesic_skeleton {
 ///                           parameter)}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{`default_voxel_memory_limit`, 2 GiB}
-///     \cgalParamExtra{The need, about 5 bytes per voxel of the set's bounding box (grown
+///     \cgalParamExtra{The need, about 7 bytes per voxel of the set's bounding box (grown
 ///                     by two voxels) plus 12 per voxel of the set, is checked before
 ///                     allocating.}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{sheet_radius_map}
+///     \cgalParamDescription{receives the <i>sheet radius</i> of every voxel that the thinning
+///                           keeps, in voxels: the number of rounds that its level of
+///                           distance burnt around it. Where the distance to the outside is
+///                           flat, as inside a thin sheet (a wing, a fin, an ear, a plate),
+///                           a level is the whole sheet and its rounds burn it from the rim
+///                           inwards, one voxel step each, so this is the distance to the
+///                           sheet's rim measured in the sheet: on the sheet's middle line,
+///                           its half width, which the MAT radius (its half thickness) does
+///                           not tell. Elsewhere it is about 1. `prune_skeleton()` takes the
+///                           larger of the two radii as its `mat_radius_map`
+///                           (`skeleton_radius_in_voxels_map()`), so that the twigs of a
+///                           sheet are judged by its width, not its thickness (package
+///                           parameter)}
+///     \cgalParamType{a model of `WritablePropertyMap` with key `Voxel_key` and value
+///                    `double`, such as `boost::associative_property_map<Sheet_radii>`}
+///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
@@ -66,7 +84,7 @@ namespace Geodesic_skeleton {
 /// \throws std::length_error when the work arrays would need more than `memory_limit`.
 ///
 /// \b Complexity: O(B + N) time and memory for B voxels in the set's bounding box and N in
-///    the set (each deletion re-queues at most 26 neighbours; the distances are sorted by
+///    the set (plus the `sheet_radius_map`'s writes, one per voxel kept) (each deletion re-queues at most 26 neighbours; the distances are sorted by
 ///    counting).
 template <typename VoxelSet, typename VoxelDistanceField,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -76,7 +94,7 @@ std::size_t thin(VoxelSet& voxels, const VoxelDistanceField& distances,
   const char* caller = "thin";
   const Voxel_box box = internal::require_nonempty_box(voxels, 2, caller);
   const internal::Grid_layout layout(box);
-  internal::require_memory(5. * double(layout.volume()) + 12. * double(voxels.size()),
+  internal::require_memory(7. * double(layout.volume()) + 12. * double(voxels.size()),
                            internal::memory_limit(np), layout, caller, "thinning a box");
 
   const std::vector<std::uint32_t> copied_d2 = internal::distances_over(distances, layout);
@@ -90,6 +108,11 @@ std::size_t thin(VoxelSet& voxels, const VoxelDistanceField& distances,
     if(fire.deleted(i))
       voxels.erase(k);
   });
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::sheet_radius_map_t>::value)
+  {
+    auto sheet_radii = CGAL::parameters::get_parameter(np, internal_np::sheet_radius_map_tag);
+    voxels.for_each([&](const Voxel_key& k) { put(sheet_radii, k, fire.sheet_radius(layout.index(k))); });
+  }
   return removed;
 }
 

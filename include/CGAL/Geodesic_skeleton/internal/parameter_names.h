@@ -19,6 +19,9 @@ CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(resolution)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(memory_limit)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(fill_holes)
 
+// thin (output); the pipeline gives it to prune_skeleton with the MAT radius
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(sheet_radius_map)
+
 // voxelize (output); to_graph, cut_spurious_cycles, move_skeleton_inside (input)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(voxelized_surface_output)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(voxelized_surface)

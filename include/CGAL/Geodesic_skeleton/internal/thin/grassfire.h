@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -40,7 +41,8 @@ constexpr double tip_growth_when_deleting = 0.3;
 constexpr std::ptrdiff_t ridge_reach_in_steps = 2;
 
 // The working state of the thinning over a padded box: bit 0 = in the set, bit 1 = queued,
-// bit 2 = deleted by the thinning, bit 3 = a candidate of the round (delete_p_simple()).
+// bit 2 = deleted by the thinning, bit 3 = a candidate of the round (delete_p_simple());
+// and the round of its level in which each deleted voxel went (sheet_radius()).
 class Grassfire
 {
 public:
@@ -48,7 +50,8 @@ public:
 
   Grassfire(const Grid_layout& layout, std::vector<std::uint8_t> state, const std::uint32_t* d2)
     : m_layout(layout), m_state(std::move(state)), m_d2(d2),
-      m_offsets(layout.neighbour_offsets()), m_test(Simple_point_test::instance())
+      m_offsets(layout.neighbour_offsets()), m_test(Simple_point_test::instance()),
+      m_round_deleted(m_state.size(), 0)
   {
     for(int row = 0; row < 9; ++row) // from (x - 1, y + dy, z + dz), dy = row % 3 - 1, dz = row / 3 - 1
       m_row_offsets[row] = (row % 3 - 1) * layout.stride_y + (row / 3 - 1) * layout.stride_z - 1;
@@ -81,8 +84,11 @@ public:
       round_size = 0;
       while(next < order.size() && m_d2[order[next]] == level)
         round[round_size++] = order[next++];
+      m_round = 0;
       while(round_size > 0)
       {
+        if(m_round < std::numeric_limits<std::uint16_t>::max())
+          ++m_round;
         std::size_t candidate_count = 0;
         for(std::size_t k = 0; k < round_size; ++k)
         {
@@ -104,7 +110,7 @@ public:
           const std::uint32_t config = configuration(i);
           if(protected_end(i, config, tip_growth_when_deleting) || !m_test.is_simple(config))
             continue;
-          m_state[i] = DELETED;
+          delete_voxel(i);
           ++removed;
           queue_neighbours(i, config, round, round_size);
         }
@@ -136,7 +142,7 @@ public:
     for(std::size_t k = 0; k < candidate_count; ++k)
       m_state[candidates[k]] &= std::uint8_t(~CANDIDATE);
     for(const auto& deleted : m_p_simple)
-      m_state[deleted.first] = DELETED;
+      delete_voxel(deleted.first);
     for(const auto& deleted : m_p_simple)
       queue_neighbours(deleted.first, deleted.second, round, round_size);
     return m_p_simple.size();
@@ -157,7 +163,33 @@ public:
     }
   }
 
+  void delete_voxel(std::size_t i)
+  {
+    m_state[i] = DELETED;
+    m_round_deleted[i] = m_round;
+  }
+
   bool deleted(std::size_t i) const { return (m_state[i] & DELETED) != 0; }
+
+  // The sheet radius of a voxel i left by run(), in voxels: the latest round of its level
+  // in which a 26-neighbour at the same distance was deleted (0 when none was). A level
+  // burns in rounds, each a step of the fire inwards; where the distance to the outside is
+  // flat, as inside a thin sheet, the level is the whole sheet and its rounds burn it from
+  // its rim, like a fire in the plane, so this is the distance from i to the sheet's rim
+  // measured in the sheet (its half width, where i is on the sheet's middle line), which the
+  // MAT radius (the half thickness) does not tell. Elsewhere a level is a shell that burns
+  // in a round or two, and this is about 1.
+  double sheet_radius(std::size_t i) const
+  {
+    std::uint16_t latest = 0;
+    for(int b = 0; b < 26; ++b)
+    {
+      const std::size_t j = std::size_t(std::ptrdiff_t(i) + m_offsets[b]);
+      if((m_state[j] & DELETED) && m_d2[j] == m_d2[i])
+        latest = (std::max)(latest, m_round_deleted[j]);
+    }
+    return double(latest);
+  }
 
   // The 26-neighbourhood of i as a configuration (bit b for neighbourhood_26()[b]): the hot
   // loop of the thinning. Read as the nine rows of three voxels of the 3 x 3 x 3 cube (in
@@ -233,6 +265,8 @@ private:
   std::array<std::ptrdiff_t, 9> m_row_offsets{};
   std::array<double, 26> m_offset_length{};
   const Simple_point_test& m_test;
+  std::vector<std::uint16_t> m_round_deleted; // by voxel: its level's round when deleted (from 1)
+  std::uint16_t m_round = 0;                  // the round of the level burning (from 1)
   std::vector<std::pair<std::uint32_t, std::uint32_t>> m_p_simple; // delete_p_simple()'s voxels and configurations
 };
 
