@@ -14,7 +14,9 @@
 //     calls outside what is inside two shells; both on the mesh with its faces
 //     triangulated; "-" for an open mesh); max
 //     outside: the largest distance from one of them to the surface (AABB tree), in % of
-//     the diagonal of the mesh's bounding box.
+//     the diagonal of the mesh's bounding box;
+//   - trees: the trees of the control skeleton (its root joints): one per body that the
+//     solid has, more when pruning leaves a piece of the skeleton on its own.
 // Then the resolution stability: joints at each resolution, and joints at the last
 // resolution over joints at 64 (or at the first, without 64), flagged "*" outside
 // [0.75, 1.25].
@@ -301,19 +303,20 @@ Quality_run print_quality_row(const std::string& name, const Mesh& mesh, const M
   }
   catch(const std::exception& e)
   {
-    std::cout << "failed: " << e.what() << " | | | | | | | |\n";
+    std::cout << "failed: " << e.what() << " | | | | | | | | |\n";
     return {};
   }
   const Joint_counts c = count_joints(control);
   std::cout << c.end_points << " | " << c.junctions << " | " << c.joints << " | " << c.bones << " | "
             << c.joints_per_chain << " | " << num_vertices(curve) << " | ";
   if(inside == nullptr)
-    std::cout << "- | - |\n";
+    std::cout << "- | - | ";
   else
   {
     const Points_outside out = curve_points_outside(*inside, curve);
-    std::cout << out.count << " | " << 100 * out.max_distance / bounding_box_diagonal(mesh) << " |\n";
+    std::cout << out.count << " | " << 100 * out.max_distance / bounding_box_diagonal(mesh) << " | ";
   }
+  std::cout << control[boost::graph_bundle].roots.size() << " |\n";
   return {joint_points(control), c.end_points};
 }
 
@@ -426,7 +429,8 @@ int main(int argc, char* argv[])
 
   std::cout << std::fixed << std::setprecision(2);
   std::cout << "| mesh | resolution | end points | junctions | joints | bones | joints per chain | curve points"
-               " | points outside | max outside (% of diagonal) |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+               " | points outside | max outside (% of diagonal) | trees |\n"
+               "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   std::vector<std::pair<std::string, std::vector<std::size_t>>> joints;
   std::ostringstream rigid_motion_rows; // printed after the stability table
   rigid_motion_rows << std::fixed << std::setprecision(2);
