@@ -41,12 +41,14 @@ struct Skeleton_radius_in_voxels_map
   using category = boost::readable_property_map_tag; ///< readable only
 
   const Voxel_distance_field* field = nullptr; ///< the distance field read
-  const Sheet_radii* sheet_radii = nullptr;    ///< the sheet radii read
+  const Sheet_radii* sheet_radii = nullptr;    ///< the sheet radii read (none when null)
 
   /// The radius of `k` in voxels.
   friend double get(const Skeleton_radius_in_voxels_map& map, const Voxel_key& k)
   {
     const double mat_radius = get(Mat_radius_in_voxels_map{map.field}, k);
+    if(map.sheet_radii == nullptr)
+      return mat_radius;
     const auto sheet = map.sheet_radii->find(k);
     return sheet == map.sheet_radii->end() ? mat_radius : (std::max)(mat_radius, sheet->second);
   }

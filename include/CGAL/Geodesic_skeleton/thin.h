@@ -67,11 +67,11 @@ namespace Geodesic_skeleton {
 ///                           inwards, one voxel step each, so this is the distance to the
 ///                           sheet's rim measured in the sheet: on the sheet's middle line,
 ///                           its half width, which the MAT radius (its half thickness) does
-///                           not tell. Elsewhere it is about 1. `prune_skeleton()` takes the
-///                           larger of the two radii as its `mat_radius_map`
-///                           (`skeleton_radius_in_voxels_map()`), so that the twigs of a
-///                           sheet are judged by its width, not its thickness (package
-///                           parameter)}
+///                           not tell. Elsewhere it is 0 or about 1. `extract_control_skeleton()`
+///                           gives `prune_skeleton()` the larger of the two radii as its
+///                           `mat_radius_map` (`skeleton_radius_in_voxels_map()`), so that the
+///                           twigs of a sheet are judged by its width, not its thickness
+///                           (package parameter)}
 ///     \cgalParamType{a model of `WritablePropertyMap` with key `Voxel_key` and value
 ///                    `double`, such as `boost::associative_property_map<Sheet_radii>`}
 ///     \cgalParamDefault{none}
@@ -84,8 +84,8 @@ namespace Geodesic_skeleton {
 /// \throws std::length_error when the work arrays would need more than `memory_limit`.
 ///
 /// \b Complexity: O(B + N) time and memory for B voxels in the set's bounding box and N in
-///    the set (plus the `sheet_radius_map`'s writes, one per voxel kept) (each deletion re-queues at most 26 neighbours; the distances are sorted by
-///    counting).
+///    the set (each deletion re-queues at most 26 neighbours; the distances are sorted by
+///    counting), plus one write to the `sheet_radius_map` per voxel kept.
 template <typename VoxelSet, typename VoxelDistanceField,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 std::size_t thin(VoxelSet& voxels, const VoxelDistanceField& distances,

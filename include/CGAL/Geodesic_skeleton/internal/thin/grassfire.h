@@ -178,7 +178,7 @@ public:
   // its rim, like a fire in the plane, so this is the distance from i to the sheet's rim
   // measured in the sheet (its half width, where i is on the sheet's middle line), which the
   // MAT radius (the half thickness) does not tell. Elsewhere a level is a shell that burns
-  // in a round or two, and this is about 1.
+  // in a round or two, and this is 0 or about 1.
   double sheet_radius(std::size_t i) const
   {
     std::uint16_t latest = 0;
