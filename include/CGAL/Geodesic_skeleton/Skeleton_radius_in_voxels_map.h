@@ -57,6 +57,13 @@ struct Skeleton_radius_in_voxels_map
 /// \ingroup PkgGeodesicSkeletonRef
 /// The larger of the MAT radius of `field` and the sheet radius of `sheet_radii` at each
 /// voxel, as a property map (see `Skeleton_radius_in_voxels_map`).
+/// \param field the distance field of the solid, from `distance_transform()`.
+/// \param sheet_radii the sheet radii of its thinned voxels, from `thin()`'s
+///        `sheet_radius_map` (a voxel without one reads its MAT radius).
+/// \pre `field` and `sheet_radii` outlive the map (it refers to them).
+///
+/// \b Complexity: O(1) to make; each `get()` is one read of the field and one expected
+///    O(1) hash lookup.
 inline Skeleton_radius_in_voxels_map skeleton_radius_in_voxels_map(const Voxel_distance_field& field,
                                                                    const Sheet_radii& sheet_radii)
 {
