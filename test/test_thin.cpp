@@ -387,6 +387,36 @@ BOOST_AUTO_TEST_CASE(both_models_give_the_same_skeleton)
   BOOST_TEST((a == b));
 }
 
+// The round numbers behind the sheet radii take 2 bytes per voxel of the box: only a call
+// that asks for the radii pays them (5 bytes per box voxel without, 7 with, plus 12 per voxel).
+BOOST_AUTO_TEST_CASE(the_sheet_radii_cost_memory_only_when_asked_for)
+{
+  const gs::Voxel_box box{gs::Voxel_key{0, -7, -7}, gs::Voxel_key{40, 8, 8}};
+  auto round_bar = [](int, int y, int z) { return y * y + z * z <= 25; };
+  const gs::Sparse_voxel_set bar = voxels_where<gs::Sparse_voxel_set>(box, round_bar);
+  const gs::Voxel_distance_field distances = gs::distance_transform(bar);
+  // The bar's bounding box is 40 x 11 x 11 voxels; thin() grows it by two on each side.
+  const double box_voxels = (40. + 4.) * (11. + 4.) * (11. + 4.);
+  const double between = 6. * box_voxels + 12. * double(bar.size());
+
+  gs::Sparse_voxel_set unlimited = bar, limited = bar;
+  gs::thin(unlimited, distances);
+  BOOST_CHECK_NO_THROW(gs::thin(limited, distances, gs::parameters::memory_limit(between)));
+  std::set<gs::Voxel_key> a, b;
+  unlimited.for_each([&](const gs::Voxel_key& k) { a.insert(k); });
+  limited.for_each([&](const gs::Voxel_key& k) { b.insert(k); });
+  BOOST_TEST(a.size() >= 30u); // the bar's axis
+  BOOST_TEST((a == b));
+
+  gs::Sparse_voxel_set with_radii = bar;
+  gs::Sheet_radii radii;
+  BOOST_CHECK_THROW(gs::thin(with_radii, distances,
+                             gs::parameters::combine(gs::parameters::memory_limit(between),
+                                                     gs::parameters::sheet_radius_map(
+                                                         boost::associative_property_map<gs::Sheet_radii>(radii)))),
+                    std::length_error);
+}
+
 BOOST_AUTO_TEST_CASE(an_empty_set_is_an_error)
 {
   gs::Sparse_voxel_set empty;

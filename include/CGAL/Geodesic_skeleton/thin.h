@@ -54,9 +54,9 @@ namespace Geodesic_skeleton {
 ///                           parameter)}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{`default_voxel_memory_limit`, 2 GiB}
-///     \cgalParamExtra{The need, about 7 bytes per voxel of the set's bounding box (grown
-///                     by two voxels) plus 12 per voxel of the set, is checked before
-///                     allocating.}
+///     \cgalParamExtra{The need, about 5 bytes per voxel of the set's bounding box (grown
+///                     by two voxels; 7 with a `sheet_radius_map`) plus 12 per voxel of
+///                     the set, is checked before allocating.}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{sheet_radius_map}
 ///     \cgalParamDescription{receives the <i>sheet radius</i> of every voxel that the thinning
@@ -94,7 +94,10 @@ std::size_t thin(VoxelSet& voxels, const VoxelDistanceField& distances,
   const char* caller = "thin";
   const Voxel_box box = internal::require_nonempty_box(voxels, 2, caller);
   const internal::Grid_layout layout(box);
-  internal::require_memory(7. * double(layout.volume()) + 12. * double(voxels.size()),
+  constexpr bool records_sheet_radii =
+      !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::sheet_radius_map_t>::value;
+  const double bytes_per_box_voxel = records_sheet_radii ? 7. : 5.; // + the 16-bit rounds of sheet_radius()
+  internal::require_memory(bytes_per_box_voxel * double(layout.volume()) + 12. * double(voxels.size()),
                            internal::memory_limit(np), layout, caller, "thinning a box");
 
   const std::vector<std::uint32_t> copied_d2 = internal::distances_over(distances, layout);
@@ -102,13 +105,13 @@ std::size_t thin(VoxelSet& voxels, const VoxelDistanceField& distances,
 
   std::vector<std::uint8_t> state = internal::to_bytes(voxels, layout);
   const std::vector<std::uint32_t> order = internal::sorted_by_distance(state, d2);
-  internal::Grassfire fire(layout, std::move(state), d2);
+  internal::Grassfire fire(layout, std::move(state), d2, records_sheet_radii);
   const std::size_t removed = fire.run(order);
   internal::for_each_cell(layout, [&](std::size_t i, const Voxel_key& k) {
     if(fire.deleted(i))
       voxels.erase(k);
   });
-  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::sheet_radius_map_t>::value)
+  if constexpr(records_sheet_radii)
   {
     auto sheet_radii = CGAL::parameters::get_parameter(np, internal_np::sheet_radius_map_tag);
     voxels.for_each([&](const Voxel_key& k) { put(sheet_radii, k, fire.sheet_radius(layout.index(k))); });

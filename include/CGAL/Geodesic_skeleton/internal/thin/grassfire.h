@@ -13,6 +13,7 @@
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/assertions.h>
 
 #include <algorithm>
 #include <cmath>
@@ -42,16 +43,18 @@ constexpr std::ptrdiff_t ridge_reach_in_steps = 2;
 
 // The working state of the thinning over a padded box: bit 0 = in the set, bit 1 = queued,
 // bit 2 = deleted by the thinning, bit 3 = a candidate of the round (delete_p_simple());
-// and the round of its level in which each deleted voxel went (sheet_radius()).
+// and, when asked for, the round of its level in which each deleted voxel went
+// (sheet_radius()): 2 bytes more per voxel of the box.
 class Grassfire
 {
 public:
   static constexpr std::uint8_t IN = 1, QUEUED = 2, DELETED = 4, CANDIDATE = 8;
 
-  Grassfire(const Grid_layout& layout, std::vector<std::uint8_t> state, const std::uint32_t* d2)
+  Grassfire(const Grid_layout& layout, std::vector<std::uint8_t> state, const std::uint32_t* d2,
+            bool record_rounds)
     : m_layout(layout), m_state(std::move(state)), m_d2(d2),
       m_offsets(layout.neighbour_offsets()), m_test(Simple_point_test::instance()),
-      m_round_deleted(m_state.size(), 0)
+      m_round_deleted(record_rounds ? m_state.size() : 0, 0)
   {
     for(int row = 0; row < 9; ++row) // from (x - 1, y + dy, z + dz), dy = row % 3 - 1, dz = row / 3 - 1
       m_row_offsets[row] = (row % 3 - 1) * layout.stride_y + (row / 3 - 1) * layout.stride_z - 1;
@@ -166,7 +169,8 @@ public:
   void delete_voxel(std::size_t i)
   {
     m_state[i] = DELETED;
-    m_round_deleted[i] = m_round;
+    if(!m_round_deleted.empty())
+      m_round_deleted[i] = m_round;
   }
 
   bool deleted(std::size_t i) const { return (m_state[i] & DELETED) != 0; }
@@ -178,9 +182,10 @@ public:
   // its rim, like a fire in the plane, so this is the distance from i to the sheet's rim
   // measured in the sheet (its half width, where i is on the sheet's middle line), which the
   // MAT radius (the half thickness) does not tell. Elsewhere a level is a shell that burns
-  // in a round or two, and this is 0 or about 1.
+  // in a round or two, and this is 0 or about 1. Needs the rounds recorded (constructor).
   double sheet_radius(std::size_t i) const
   {
+    CGAL_precondition(!m_round_deleted.empty());
     std::uint16_t latest = 0;
     for(int b = 0; b < 26; ++b)
     {
@@ -265,7 +270,7 @@ private:
   std::array<std::ptrdiff_t, 9> m_row_offsets{};
   std::array<double, 26> m_offset_length{};
   const Simple_point_test& m_test;
-  std::vector<std::uint16_t> m_round_deleted; // by voxel: its level's round when deleted (from 1)
+  std::vector<std::uint16_t> m_round_deleted; // by voxel: its level's round when deleted (from 1); empty when not recorded
   std::uint16_t m_round = 0;                  // the round of the level burning (from 1)
   std::vector<std::pair<std::uint32_t, std::uint32_t>> m_p_simple; // delete_p_simple()'s voxels and configurations
 };
