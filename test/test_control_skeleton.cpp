@@ -499,6 +499,26 @@ BOOST_AUTO_TEST_CASE(a_loop_is_cut_once_into_a_tree)
   BOOST_TEST(num_edges(c) >= 3u); // a circle is not straight anywhere
 }
 
+// A wavy chain of MAT radius 0.1 (a thin tail, as a fine grid measures it) bends every 2
+// units: its lengths in radii of 0.1 give it a joint at every bend; measured in radii of at
+// least 1 (smallest_radius), its waves are under the straightness tolerance.
+BOOST_AUTO_TEST_CASE(the_smallest_radius_is_the_unit_of_thin_parts)
+{
+  std::vector<Point> wave;
+  for(int i = 0; i <= 200; ++i)
+    wave.emplace_back(0.1 * i, 0.3 * std::sin(0.1 * i * 3.14159265358979 / 2.), 0);
+  const Skeleton s = chain_skeleton(wave, 0.1);
+  const Control fine = bones_of(s, paper_split);
+  const Control floored = bones_of(s, gs::parameters::combine(paper_split, gs::parameters::smallest_radius(1.0)));
+  BOOST_TEST(num_edges(fine) >= 8u);
+  BOOST_TEST(num_edges(floored) <= 2u);
+  for(std::size_t j = 0; j < num_vertices(floored); ++j)
+    BOOST_TEST(floored[j].radius == 0.1); // the joints keep their own radius
+  // A floor under every radius changes nothing.
+  BOOST_TEST(num_edges(bones_of(s, gs::parameters::combine(paper_split, gs::parameters::smallest_radius(0.05)))) ==
+             num_edges(fine));
+}
+
 BOOST_AUTO_TEST_CASE(bad_parameters_throw)
 {
   const Skeleton s = chain_skeleton(polyline({Point(0, 0, 0), Point(0, 0, 30)}, 0.5), 2.0);
@@ -506,6 +526,8 @@ BOOST_AUTO_TEST_CASE(bad_parameters_throw)
   BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::bend_threshold(-0.1)), std::invalid_argument);
   BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::straightness_tolerance(std::nan(""))), std::invalid_argument);
   BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::maximum_bone_length_factor(-1.0)), std::invalid_argument);
+  BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::smallest_radius(-1.0)), std::invalid_argument);
+  BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::smallest_radius(std::nan(""))), std::invalid_argument);
   BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::chord_length_factors(std::vector<double>{})),
                     std::invalid_argument);
   BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::minimum_bone_length_factor(-1.0)), std::invalid_argument);

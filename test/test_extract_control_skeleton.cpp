@@ -68,6 +68,26 @@ std::size_t joints_of_kind(const Control& c, gs::Joint_kind kind)
 
 BOOST_AUTO_TEST_SUITE(extract_control_skeleton)
 
+// The default smallest_radius is half a voxel of the default grid, the smallest MAT radius
+// there: at the default resolution it changes no joint; at 128, where thin parts are
+// measured thinner, it keeps them from getting more joints.
+BOOST_AUTO_TEST_CASE(the_default_smallest_radius_acts_only_on_finer_grids)
+{
+  const Mesh cow = test::demo_mesh<Mesh>("cow.off");
+  Control floored, unfloored;
+  gs::extract_control_skeleton(cow, floored);
+  gs::extract_control_skeleton(cow, unfloored, gs::parameters::smallest_radius(0.));
+  BOOST_TEST(num_vertices(floored) == num_vertices(unfloored));
+  for(std::size_t j = 0; j < (std::min)(num_vertices(floored), num_vertices(unfloored)); ++j)
+    BOOST_TEST(floored[j].point == unfloored[j].point);
+
+  const Mesh cylinder = test::demo_mesh<Mesh>("cylinder.off");
+  gs::extract_control_skeleton(cylinder, floored, gs::parameters::resolution(128));
+  gs::extract_control_skeleton(cylinder, unfloored, gs::parameters::combine(gs::parameters::resolution(128),
+                                                                       gs::parameters::smallest_radius(0.)));
+  BOOST_TEST(num_vertices(floored) < num_vertices(unfloored));
+}
+
 // A hand-made rig for these animals has about 15 to 40 bones (spine, neck, head, tail,
 // three or four per leg, ears or horns); each must give one connected tree, with its
 // joints inside the mesh, and limbs reached: an end joint per leg, head and tail at least.

@@ -236,6 +236,15 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 ///     \cgalParamType{as for `split_into_bones()`}
 ///     \cgalParamDefault{as for `split_into_bones()`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{smallest_radius}
+///     \cgalParamDescription{the setting of `split_into_bones()`: the smallest radius its
+///                           lengths are measured in, world units, in [0, inf]}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{half a voxel of the default grid: the mesh's longest principal
+///                       extent / (2 `default_voxel_resolution`), the smallest MAT radius at
+///                       the default resolution, so that the joints of thin parts do not
+///                       multiply at a finer resolution; 0 gives the MAT radius as it is}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{visitor}
 ///     \cgalParamDescription{an object with `stage_finished(stage, milliseconds)`, called
 ///                           after each stage}
@@ -362,7 +371,13 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   surface = Voxelized_surface(); // as large as the mesh
   clock.finished("curve_points_inside");
 
-  split_into_bones(curve, out, curve_np);
+  // Parts thinner than half a voxel of the default grid get the joints of parts that thick,
+  // whatever the resolution: a finer grid measures them thinner, and the rig's joints should
+  // not multiply with it (at the default resolution no MAT radius is smaller).
+  const double longest_extent = report.voxel_size * double(report.resolution);
+  const double smallest_radius = choose_parameter(get_parameter(np, internal_np::smallest_radius_tag),
+                                                  longest_extent / (2. * default_voxel_resolution));
+  split_into_bones(curve, out, parameters::combine(parameters::smallest_radius(smallest_radius), curve_np));
   report.joints_moved_inside = internal::joints_on_vertices(out, moved_inside);
   clock.finished("split_into_bones");
   if(Skeleton* curve_output = internal::output_pointer<Skeleton>(np, internal_np::curve_skeleton_output_tag))

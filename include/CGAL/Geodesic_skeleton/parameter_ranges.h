@@ -62,6 +62,11 @@ inline constexpr Parameter_range small_piece_fraction{"small_piece_fraction", 0,
 /// The voxel stages: the most memory a stage may allocate, in bytes (default 2 GiB).
 inline constexpr Parameter_range memory_limit{"memory_limit", 1, std::numeric_limits<double>::infinity(),
                                               2147483648., false, false};
+/// `split_into_bones()`: the smallest radius that the split's lengths are measured in, world
+/// units (0: the MAT radius as it is). `extract_control_skeleton()` gives half a voxel of the
+/// default grid (the mesh's longest principal extent / 128) unless told otherwise.
+inline constexpr Parameter_range smallest_radius{"smallest_radius", 0, std::numeric_limits<double>::infinity(),
+                                                 0., false, false};
 /// `prune_skeleton()`: end branches shorter than this many MAT radii are snipped.
 inline constexpr Parameter_range spur_length_factor{"spur_length_factor", 0, 100, 1.2, false, false};
 /// `prune_skeleton()`: end branches whose MAT balls reach out of their junction's ball by

@@ -51,11 +51,13 @@ Bone_splitting_settings bone_splitting_settings(const NamedParameters& np,
                        ranges::maximum_bone_length_factor.default_value),
       choose_parameter(get_parameter(np, internal_np::chord_length_factors_tag),
                        std::vector<double>{ranges::chord_length_factor.default_value,
-                                           2 * ranges::chord_length_factor.default_value})};
+                                           2 * ranges::chord_length_factor.default_value}),
+      choose_parameter(get_parameter(np, internal_np::smallest_radius_tag), ranges::smallest_radius.default_value)};
   checked_parameter(ranges::bend_threshold, s.bend_threshold, caller);
   checked_parameter(ranges::straightness_tolerance, s.straightness_tolerance, caller);
   checked_parameter(ranges::minimum_bone_length_factor, s.minimum_bone_length_factor, caller);
   checked_parameter(ranges::maximum_bone_length_factor, s.maximum_bone_length_factor, caller);
+  checked_parameter(ranges::smallest_radius, s.smallest_radius, caller);
   if(s.chord_length_factors.empty())
     throw std::invalid_argument(caller + ": chord_length_factors must not be empty");
   for(double f : s.chord_length_factors)
@@ -102,6 +104,11 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
                                   "non-finite radius");
   }
   auto radius = [&](std::size_t v) { return radii_of[v]; };
+  // The radius that the lengths of the split are measured in: at least `smallest_radius`,
+  // so that parts thinner than it (which a finer grid measures thinner) get no more joints.
+  std::vector<double> length_unit_of(n);
+  for(std::size_t v = 0; v < n; ++v)
+    length_unit_of[v] = (std::max)(radii_of[v], settings.smallest_radius);
   Joint_graph<Point> graph;
   std::vector<long> joint_of(n, -1);
   auto position = [&](std::size_t v) {
@@ -128,7 +135,7 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
       add_joint(v, d >= 3 ? Joint_kind::junction : Joint_kind::end);
   }
 
-  const std::vector<double> largest_radius_of_piece = largest_radius_of_pieces(skeleton, radii_of);
+  const std::vector<double> largest_radius_of_piece = largest_radius_of_pieces(skeleton, length_unit_of);
   for(Skeleton_branch branch : skeleton_branches(skeleton))
   {
     std::vector<std::size_t>& b = branch.vertices;
@@ -147,7 +154,7 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
     for(std::size_t v : b)
     {
       points.push_back(position(v));
-      radii.push_back(radius(v));
+      radii.push_back(length_unit_of[v]);
     }
     Branch_splitter splitter(points, radii, settings, largest_radius_of_piece[b.front()]);
     const std::vector<std::size_t> cuts = splitter.joints();
@@ -178,7 +185,8 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 /// between them is split recursively where the chord-to-point distance accumulation
 /// (`chord_to_point_distance_accumulation()`) peaks at `bend_threshold` or more, or where
 /// it strays from its chord by more than `straightness_tolerance` MAT radii, never leaving
-/// a bone shorter than `minimum_bone_length_factor` MAT radii; a straight bone longer than
+/// a bone shorter than `minimum_bone_length_factor` MAT radii (each radius taken as at least
+/// `smallest_radius`); a straight bone longer than
 /// `maximum_bone_length_factor` times the largest MAT radius of its connected component
 /// (the body's thickness; a straight limb has no bend to cut at) is cut
 /// into bones of about equal length, each cut at the narrowest point near its
@@ -256,6 +264,16 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 ///                           parameter)}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{3}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{smallest_radius}
+///     \cgalParamDescription{the smallest radius that the lengths of the split (chords,
+///                           straightness, shortest and longest bone) are measured in, in
+///                           world units, in [0, inf]: a smaller MAT radius counts as this one
+///                           there, so that a part thinner than it gets the joints of a part
+///                           this thick; the joints keep their own radius (package parameter)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{0 (the MAT radius as it is); `extract_control_skeleton()` passes
+///                       half a voxel of the default grid}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{chord_length_factors}
 ///     \cgalParamDescription{the chord lengths of the accumulation, in MAT radii, each in

@@ -38,6 +38,7 @@ struct Bone_splitting_settings
   double minimum_bone_length_factor; // shortest bone, in MAT radii
   double maximum_bone_length_factor; // longest straight bone, in largest MAT radii of the piece (0: no limit)
   std::vector<double> chord_length_factors; // CPDA chord lengths, in MAT radii
+  double smallest_radius = 0;               // radii below it count as it in every length (world units)
 };
 
 class Branch_splitter
