@@ -73,6 +73,18 @@ if(error)
   message(FATAL_ERROR "no JSON on standard output: ${error}")
 endif()
 
+# The split's smallest radius: by default the library's (positive: half a voxel of the
+# default grid), reported; a given one is used and reported as given.
+string(JSON default_smallest_radius GET "${stdout}" parameters smallest_radius)
+if(NOT default_smallest_radius GREATER 0)
+  message(FATAL_ERROR "the default smallest_radius is ${default_smallest_radius}, not positive")
+endif()
+run(${MESH} --resolution 32 --smallest-radius 0.25)
+string(JSON given_smallest_radius GET "${stdout}" parameters smallest_radius)
+if(NOT given_smallest_radius EQUAL 0.25)
+  message(FATAL_ERROR "--smallest-radius 0.25: the JSON says ${given_smallest_radius}")
+endif()
+
 # The other formats: the OBJ and the polylines hold every bone, cut or not.
 string(JSON cut_bones LENGTH "${json}" control cut_bones)
 math(EXPR all_bones "${bones} + ${cut_bones}")

@@ -27,6 +27,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
+#include <optional>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -78,6 +79,7 @@ struct Options
   double straightness_tolerance = ranges::straightness_tolerance.default_value;
   double minimum_bone_length_factor = ranges::minimum_bone_length_factor.default_value;
   double maximum_bone_length_factor = ranges::maximum_bone_length_factor.default_value;
+  std::optional<double> smallest_radius; // world units; none: extract_control_skeleton()'s default
   std::size_t reeb_intervals = static_cast<std::size_t>(ranges::number_of_reeb_intervals.default_value);
   bool fill_holes = true;
   bool keep_surface_voxels = true;
@@ -96,6 +98,7 @@ struct Numeric_option
   const char* metavar;
   const gs::Parameter_range& range;
   const char* help;
+  const char* default_text = nullptr; // when the default is not the range's: its words
 };
 const Numeric_option numeric_options[] = {
     {"--resolution", "N", ranges::resolution, "the longest principal extent of the mesh, in voxels"},
@@ -110,6 +113,9 @@ const Numeric_option numeric_options[] = {
     {"--min-bone-length", "F", ranges::minimum_bone_length_factor, "shortest bone in MAT radii"},
     {"--max-bone-length", "F", ranges::maximum_bone_length_factor,
      "longest straight bone in MAT radii, cut at its narrowings (0: no limit)"},
+    {"--smallest-radius", "R", ranges::smallest_radius,
+     "the split counts radii under R (world units) as R: thin parts get few joints",
+     "the longest principal extent / 128"},
     {"--reeb-intervals", "N", ranges::number_of_reeb_intervals, "intervals of the Reeb graph reported for comparison"},
     {"--max-bones", "K", ranges::max_bones_per_vertex, "skinning: bones that may influence one vertex"},
     {"--falloff", "P", ranges::falloff, "skinning: exponent of the inverse-distance weights"},
@@ -161,8 +167,15 @@ std::string usage_text()
   std::ostringstream text;
   text << usage_head;
   for(const Numeric_option& o : numeric_options)
+  {
     text << "  " << std::left << std::setw(27) << (std::string(o.option) + " " + o.metavar) << o.help << ",\n"
-         << std::setw(29) << "" << o.range.valid_values() << " (default " << o.range.default_value << ")\n";
+         << std::setw(29) << "" << o.range.valid_values() << " (default ";
+    if(o.default_text)
+      text << o.default_text;
+    else
+      text << o.range.default_value;
+    text << ")\n";
+  }
   text << "  -h, --help                 show this help\n";
   return text.str();
 }
@@ -232,6 +245,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--straightness") o.straightness_tolerance = parse_number<double>(a, value());
     else if(a == "--min-bone-length") o.minimum_bone_length_factor = parse_number<double>(a, value());
     else if(a == "--max-bone-length") o.maximum_bone_length_factor = parse_number<double>(a, value());
+    else if(a == "--smallest-radius") o.smallest_radius = parse_number<double>(a, value());
     else if(a == "--reeb-intervals") o.reeb_intervals = parse_number<std::size_t>(a, value());
     else if(a == "--skeleton") o.skeleton = value();
     else if(a == "--weights") o.weights = true;
@@ -500,7 +514,11 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
         params::number_of_reeb_intervals(o.reeb_intervals), params::curve_skeleton_output(&curve),
         params::thinned_skeleton_output(thinned_graph ? &thinned : nullptr),
         params::reeb_graph_output(o.reeb_graph ? &reeb : nullptr));
-    report = gs::extract_control_skeleton(mesh, control, np);
+    // Without --smallest-radius, the library's default (it depends on the mesh's extent).
+    report = o.smallest_radius
+                 ? gs::extract_control_skeleton(mesh, control,
+                                                params::combine(params::smallest_radius(*o.smallest_radius), np))
+                 : gs::extract_control_skeleton(mesh, control, np);
   }
   catch(const std::exception& e) // the stages' messages name the stage and the problem
   {
@@ -564,6 +582,7 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
                         {"straightness_tolerance", o.straightness_tolerance},
                         {"minimum_bone_length_factor", o.minimum_bone_length_factor},
                         {"maximum_bone_length_factor", o.maximum_bone_length_factor},
+                        {"smallest_radius", report.smallest_radius},
                         {"reeb_intervals", o.reeb_intervals}, {"voxel_size", report.voxel_size}}},
         {"computed", computed},
         {"timings_ms", timings},

@@ -75,8 +75,12 @@ BOOST_AUTO_TEST_CASE(the_default_smallest_radius_acts_only_on_finer_grids)
 {
   const Mesh cow = test::demo_mesh<Mesh>("cow.off");
   Control floored, unfloored;
-  gs::extract_control_skeleton(cow, floored);
-  gs::extract_control_skeleton(cow, unfloored, gs::parameters::smallest_radius(0.));
+  const gs::Control_skeleton_report by_default = gs::extract_control_skeleton(cow, floored);
+  const gs::Control_skeleton_report given =
+      gs::extract_control_skeleton(cow, unfloored, gs::parameters::smallest_radius(0.));
+  BOOST_TEST(by_default.smallest_radius == by_default.voxel_size * by_default.resolution / 128,
+             boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(given.smallest_radius == 0.);
   BOOST_TEST(num_vertices(floored) == num_vertices(unfloored));
   for(std::size_t j = 0; j < (std::min)(num_vertices(floored), num_vertices(unfloored)); ++j)
     BOOST_TEST(floored[j].point == unfloored[j].point);

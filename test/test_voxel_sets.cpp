@@ -17,6 +17,7 @@
 
 #include <Geodesic_skeleton_test/shapes.h>
 #include <Geodesic_skeleton_test/voxel_archetypes.h>
+#include <Geodesic_skeleton_test/voxel_skeleton.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -36,20 +37,13 @@
 #include <vector>
 
 namespace gs = CGAL::Geodesic_skeleton;
+namespace test = Geodesic_skeleton_test;
 
 namespace {
 
 using Voxel_set_models = boost::mpl::list<gs::Dense_voxel_grid, gs::Sparse_voxel_set>;
 
 const gs::Voxel_box test_box{gs::Voxel_key{-3, -2, -1}, gs::Voxel_key{5, 6, 7}};
-
-template <typename VoxelSet>
-std::set<gs::Voxel_key> keys_of(const VoxelSet& s)
-{
-  std::set<gs::Voxel_key> keys;
-  s.for_each([&](const gs::Voxel_key& k) { keys.insert(k); });
-  return keys;
-}
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
@@ -74,18 +68,18 @@ Stage_outputs run_voxel_stages(const Mesh& mesh, AsField as_field)
   Stage_outputs out;
   VoxelSet voxels;
   out.solid_size = gs::voxelize(mesh, voxels, gs::parameters::resolution(40));
-  out.solid = keys_of(voxels);
+  out.solid = test::keys_of(voxels);
   const auto field = as_field(gs::distance_transform(voxels));
   out.squared_distances = field.values();
   out.thinned_away = gs::thin(voxels, field);
-  out.thinned = keys_of(voxels);
+  out.thinned = test::keys_of(voxels);
   const gs::Small_pieces_report pieces = gs::remove_small_pieces(voxels, field);
   out.small_pieces = {pieces.pieces, pieces.removed_pieces, pieces.removed_voxels};
   out.cut_away = gs::cut_spurious_cycles(voxels, mesh);
   const gs::Pruning_report pruning = gs::prune_skeleton(voxels);
   out.pruning = {pruning.branched_regions, pruning.removed_branched_points, pruning.snipped_branches,
                  pruning.snipped_points, pruning.rounds};
-  out.pruned = keys_of(voxels);
+  out.pruned = test::keys_of(voxels);
   const gs::Skeleton_point_counts counts = gs::count_skeleton_points(voxels);
   out.classes = {counts.isolated, counts.end, counts.middle, counts.connection, counts.branched_connection};
   Skeleton graph;
@@ -148,13 +142,13 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(a_model_behaves_like_a_set_of_keys, VoxelSet, Voxe
     BOOST_TEST(s.contains(k) == (reference.count(k) == 1));
   }
   BOOST_TEST(s.size() == reference.size());
-  BOOST_TEST((keys_of(s) == reference));
+  BOOST_TEST((test::keys_of(s) == reference));
   for(const gs::Voxel_key& k : reference)
     BOOST_TEST(s.bounding_box().contains(k));
   BOOST_TEST(!s.contains(gs::Voxel_key{100, 100, 100}));
   s.clear();
   BOOST_TEST(s.size() == 0u);
-  BOOST_TEST(keys_of(s).empty());
+  BOOST_TEST(test::keys_of(s).empty());
 }
 
 BOOST_AUTO_TEST_CASE_TEMPLATE(reset_empties_the_set_and_sets_the_frame, VoxelSet, Voxel_set_models)

@@ -58,6 +58,7 @@ struct Control_skeleton_report
   Pruning_report pruning;          ///< what pruning removed
   std::size_t curve_points_moved_inside = 0; ///< curve-skeleton points that lay outside the (closed) mesh and were moved in
   std::size_t joints_moved_inside = 0; ///< joints on those points: they moved in with them
+  double smallest_radius = 0;      ///< the `smallest_radius` the split used, given or default (world units)
   std::size_t reeb_nodes = 0;      ///< nodes of the Reeb graph, when one was asked for
   std::size_t reeb_edges = 0;      ///< arcs of the Reeb graph, when one was asked for
   /// Wall-clock time of each stage in milliseconds, in the order they ran: "voxelize",
@@ -375,9 +376,9 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   // whatever the resolution: a finer grid measures them thinner, and the rig's joints should
   // not multiply with it (at the default resolution no MAT radius is smaller).
   const double longest_extent = report.voxel_size * double(report.resolution);
-  const double smallest_radius = choose_parameter(get_parameter(np, internal_np::smallest_radius_tag),
-                                                  longest_extent / (2. * default_voxel_resolution));
-  split_into_bones(curve, out, parameters::combine(parameters::smallest_radius(smallest_radius), curve_np));
+  report.smallest_radius = choose_parameter(get_parameter(np, internal_np::smallest_radius_tag),
+                                            longest_extent / (2. * default_voxel_resolution));
+  split_into_bones(curve, out, parameters::combine(parameters::smallest_radius(report.smallest_radius), curve_np));
   report.joints_moved_inside = internal::joints_on_vertices(out, moved_inside);
   clock.finished("split_into_bones");
   if(Skeleton* curve_output = internal::output_pointer<Skeleton>(np, internal_np::curve_skeleton_output_tag))
