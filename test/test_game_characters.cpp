@@ -10,6 +10,7 @@
 #include <CGAL/Geodesic_skeleton/thin.h>
 #include <CGAL/Geodesic_skeleton/voxelize.h>
 
+#include <Geodesic_skeleton_test/characters.h>
 #include <Geodesic_skeleton_test/joints.h>
 #include <Geodesic_skeleton_test/shapes.h>
 
@@ -248,6 +249,45 @@ BOOST_AUTO_TEST_CASE(a_thin_plate_with_a_ragged_rim_gets_one_chain)
     max_x = std::max(max_x, j.point.x());
   }
   BOOST_TEST(max_x - min_x >= 0.5 * length);
+}
+
+// The winged body's wings (characters.h) are sheets about one voxel of the default grid
+// thick, slightly tilted to the grid (the head is off the wings' plane), so their voxels
+// shift by one layer along lines across the wing. Thinning by distance alone kept such a
+// line as a chain at 64, along the leading edge of one wing, beside a branch on its rim.
+// Each wing's skeleton is one chain through the middle of its chord, at every resolution:
+// the curve points over the wing (a fifth to seven tenths of the span out, short of the
+// rounded tip) are within a quarter chord of its middle, and the skeleton has four end
+// points (head, tail, two wing tips).
+BOOST_AUTO_TEST_CASE(each_wing_of_a_winged_body_gets_one_chain_through_its_middle)
+{
+  const Mesh mesh = test::mesh_of<Mesh>(test::winged_body());
+  for(int resolution : {48, 64, 96, 128})
+  {
+    BOOST_TEST_CONTEXT("resolution " << resolution)
+    {
+      Control control;
+      Curve curve;
+      const gs::Control_skeleton_report report = gs::extract_control_skeleton(
+          mesh, control, params::combine(params::resolution(resolution), params::curve_skeleton_output(&curve)));
+      BOOST_TEST(report.pruned.end_points == 4u);
+      std::size_t over_the_wings = 0;
+      for(auto v : CGAL::make_range(vertices(curve)))
+      {
+        const Point& p = curve[v].point;
+        const double span = std::abs(p.y());
+        if(span < 0.2 || span > 0.7)
+          continue;
+        ++over_the_wings;
+        // wing(): leading edge from x = 0.2 at the root to -0.05 at |y| = 0.92, trailing
+        // edge from -0.2 to -0.15.
+        const double leading = 0.2 - 0.25 * span / 0.92, trailing = -0.2 + 0.05 * span / 0.92;
+        BOOST_TEST(std::abs(p.x() - (leading + trailing) / 2) < 0.25 * (leading - trailing),
+                   "curve point (" << p.x() << ", " << p.y() << ")");
+      }
+      BOOST_TEST(over_the_wings >= 8u);
+    }
+  }
 }
 
 BOOST_AUTO_TEST_CASE(remove_small_pieces_removes_exactly_the_small_ones)

@@ -394,7 +394,7 @@ BOOST_AUTO_TEST_CASE(the_sheet_radii_cost_memory_only_when_asked_for)
   const gs::Voxel_distance_field distances = gs::distance_transform(bar);
   // The bar's bounding box is 40 x 11 x 11 voxels; thin() grows it by two on each side.
   const double box_voxels = (40. + 4.) * (11. + 4.) * (11. + 4.);
-  const double between = 6. * box_voxels + 12. * double(bar.size());
+  const double between = 6. * box_voxels + 28. * double(bar.size());
 
   gs::Sparse_voxel_set unlimited = bar, limited = bar;
   gs::thin(unlimited, distances);

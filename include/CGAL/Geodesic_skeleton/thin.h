@@ -34,7 +34,10 @@ namespace Geodesic_skeleton {
 /// <i>simple</i> (its deletion changes no component, cavity or tunnel) and is not the end
 /// of a curve on the medial axis. The result has as many 26-components, tunnels and
 /// cavities as the input, and lies on the ridge of the distance field, within about a
-/// voxel. The method (the protection of curve ends, the rounds of a level, the
+/// voxel. In a part about two voxels thick (a wing, a fin, a thin tube) the distance is
+/// flat, and the voxels there burn by face direction from the part's rim, so that a thin
+/// sheet keeps its middle curve, not one along its rim or its stair steps in the grid. The
+/// method (the protection of curve ends, the rounds of a level, thin parts, the
 /// guarantees, the simple-point test) is described in the manual, section
 /// \ref manual_thin.
 ///
@@ -55,8 +58,8 @@ namespace Geodesic_skeleton {
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{`default_voxel_memory_limit`, 2 GiB}
 ///     \cgalParamExtra{The need, about 5 bytes per voxel of the set's bounding box (grown
-///                     by two voxels; 7 with a `sheet_radius_map`) plus 12 per voxel of
-///                     the set, is checked before allocating.}
+///                     by two voxels; 7 with a `sheet_radius_map`) plus at most 28 per
+///                     voxel of the set, is checked before allocating.}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{sheet_radius_map}
 ///     \cgalParamDescription{receives the <i>sheet radius</i> of every voxel that the thinning
@@ -97,14 +100,16 @@ std::size_t thin(VoxelSet& voxels, const VoxelDistanceField& distances,
   constexpr bool records_sheet_radii =
       !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::sheet_radius_map_t>::value;
   const double bytes_per_box_voxel = records_sheet_radii ? 7. : 5.; // + the 16-bit rounds of sheet_radius()
-  internal::require_memory(bytes_per_box_voxel * double(layout.volume()) + 12. * double(voxels.size()),
+  // Per voxel of the set, at most: its place in the order, a round's queue and candidates
+  // (4 bytes each), and the work lists of the parallel deletions (16).
+  internal::require_memory(bytes_per_box_voxel * double(layout.volume()) + 28. * double(voxels.size()),
                            internal::memory_limit(np), layout, caller, "thinning a box");
 
   const std::vector<std::uint32_t> copied_d2 = internal::distances_over(distances, layout);
   const std::uint32_t* d2 = copied_d2.data();
 
   std::vector<std::uint8_t> state = internal::to_bytes(voxels, layout);
-  const std::vector<std::uint32_t> order = internal::sorted_by_distance(state, d2);
+  const std::vector<std::uint32_t> order = internal::sorted_by_burning_level(state, d2, layout);
   internal::Grassfire fire(layout, std::move(state), d2, records_sheet_radii);
   const std::size_t removed = fire.run(order);
   internal::for_each_cell(layout, [&](std::size_t i, const Voxel_key& k) {

@@ -16,6 +16,7 @@
 #include <CGAL/assertions.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -40,6 +41,26 @@ constexpr double tip_growth_when_deleting = 0.3;
 // directions: two steps smooth the rounding of the discrete radii, which one step alone
 // would take for growth or for its absence.
 constexpr std::ptrdiff_t ridge_reach_in_steps = 2;
+// The squared distance up to which a voxel may be in a thin part (in_thin_part()): a part
+// about two voxels thick, where every voxel is within sqrt(2) of the outside.
+constexpr std::uint32_t thin_part_d2 = 2;
+
+// The level at which the thinning burns a voxel of squared distance d2[i]: d2[i], except
+// on the stair steps of a thin slanted sheet. A sheet two voxels thick and slightly
+// tilted to the grid is three voxels thick along each line where its layers shift by
+// one, and the middle voxels there are at sqrt(2) from the outside, the rest at 1: those
+// lines would burn last, as ridges, and keep chains across the sheet that have nothing
+// to do with its shape. A voxel at sqrt(2) with no deeper neighbour (a stair step, not
+// the way into a thicker part) burns with the sheet, at level 1.
+inline std::uint32_t burning_level(const std::uint32_t* d2, std::size_t i, const std::array<std::ptrdiff_t, 26>& offsets)
+{
+  if(d2[i] != thin_part_d2)
+    return d2[i];
+  for(std::ptrdiff_t o : offsets)
+    if(d2[std::size_t(std::ptrdiff_t(i) + o)] > thin_part_d2)
+      return d2[i];
+  return 1;
+}
 
 // The working state of the thinning over a padded box: bit 0 = in the set, bit 1 = queued,
 // bit 2 = deleted by the thinning, bit 3 = a candidate of the round (delete_p_simple());
@@ -72,6 +93,11 @@ public:
   // unit step, as on a plateau of the distance): an end point that the round's own
   // deletions expose at a corner of the shape is no tip, and goes. Only that last step,
   // where the set is two voxels thick and one of two voxels must go, depends on the order.
+  // In a thin part (in_thin_part()) that step would erode a sheet in index order, like a
+  // raster scan, and leave an arbitrary curve: there the candidates left go first by face
+  // direction (delete_thin_by_direction()), and those still left wait for the next round
+  // when it deleted any, so that a sheet loses one layer, then burns from its rim inwards.
+  // Levels are those of burning_level().
   std::size_t run(const std::vector<std::uint32_t>& order)
   {
     for(std::uint32_t i : order)
@@ -83,9 +109,9 @@ public:
     std::size_t round_size = 0;
     while(next < order.size())
     {
-      const std::uint32_t level = m_d2[order[next]];
+      const std::uint32_t level = burning_level(m_d2, order[next], m_offsets);
       round_size = 0;
-      while(next < order.size() && m_d2[order[next]] == level)
+      while(next < order.size() && burning_level(m_d2, order[next], m_offsets) == level)
         round[round_size++] = order[next++];
       m_round = 0;
       while(round_size > 0)
@@ -105,11 +131,18 @@ public:
         }
         round_size = 0;
         removed += delete_p_simple(candidates.data(), candidate_count, round, round_size);
+        const std::size_t thin_removed = delete_thin_by_direction(candidates.data(), candidate_count, round, round_size);
+        removed += thin_removed;
         for(std::size_t k = 0; k < candidate_count; ++k)
         {
           const std::uint32_t i = candidates[k];
           if(!(m_state[i] & IN))
             continue;
+          if(thin_removed > 0 && in_thin_part(i))
+          {
+            queue(i, round, round_size);
+            continue;
+          }
           const std::uint32_t config = configuration(i);
           if(protected_end(i, config, tip_growth_when_deleting) || !m_test.is_simple(config))
             continue;
@@ -151,6 +184,59 @@ public:
     return m_p_simple.size();
   }
 
+  // The candidates of a thin part (in_thin_part()) that are still in the set, deleted
+  // direction by direction: for each of the six face directions in turn, those open on
+  // that side (their face neighbour there is outside), still simple and not protected end
+  // points, are deleted at once where P-simple among them. A sheet two voxels thick so
+  // loses the layer facing one way whole, whatever the order of its voxels, and a sheet
+  // one voxel thick its rim. Returns the number deleted.
+  std::size_t delete_thin_by_direction(const std::uint32_t* candidates, std::size_t candidate_count,
+                                       std::vector<std::uint32_t>& round, std::size_t& round_size)
+  {
+    m_thin_candidates.clear();
+    for(std::size_t k = 0; k < candidate_count; ++k)
+      if((m_state[candidates[k]] & IN) && in_thin_part(candidates[k]))
+        m_thin_candidates.push_back(candidates[k]);
+    std::size_t removed = 0;
+    for(std::ptrdiff_t face : {m_layout.stride_z, -m_layout.stride_z, m_layout.stride_y, -m_layout.stride_y,
+                               std::ptrdiff_t(1), std::ptrdiff_t(-1)})
+    {
+      m_open.clear();
+      for(std::uint32_t i : m_thin_candidates)
+      {
+        if(!(m_state[i] & IN) || (m_state[std::size_t(std::ptrdiff_t(i) + face)] & IN))
+          continue;
+        const std::uint32_t config = configuration(i);
+        if(!protected_end(i, config, tip_growth_when_deleting) && m_test.is_simple(config))
+          m_open.push_back(i);
+      }
+      removed += delete_p_simple(m_open.data(), m_open.size(), round, round_size);
+    }
+    return removed;
+  }
+
+  // Whether i is in a part about two voxels thick: it and its 26 neighbours are within
+  // sqrt(thin_part_d2) of the outside (a thin sheet, or a tube or an edge as thin).
+  bool in_thin_part(std::size_t i) const
+  {
+    if(m_d2[i] > thin_part_d2)
+      return false;
+    for(std::ptrdiff_t o : m_offsets)
+      if(m_d2[std::size_t(std::ptrdiff_t(i) + o)] > thin_part_d2)
+        return false;
+    return true;
+  }
+
+  // Queues voxel i of the set to burn in the next round, unless it is queued already.
+  void queue(std::uint32_t i, std::vector<std::uint32_t>& round, std::size_t& round_size)
+  {
+    if(!(m_state[i] & QUEUED))
+    {
+      m_state[i] |= QUEUED;
+      round[round_size++] = i;
+    }
+  }
+
   // Queues the neighbours in the set of a deleted voxel i (the bits of `config`) to burn again.
   void queue_neighbours(std::uint32_t i, std::uint32_t config, std::vector<std::uint32_t>& round,
                         std::size_t& round_size)
@@ -158,11 +244,8 @@ public:
     for(std::uint32_t in = config; in != 0; in &= in - 1)
     {
       const std::size_t j = std::size_t(std::ptrdiff_t(i) + m_offsets[std::size_t(lowest_bit(in))]);
-      if((m_state[j] & IN) && !(m_state[j] & QUEUED))
-      {
-        m_state[j] |= QUEUED;
-        round[round_size++] = std::uint32_t(j);
-      }
+      if(m_state[j] & IN)
+        queue(std::uint32_t(j), round, round_size);
     }
   }
 
@@ -187,10 +270,11 @@ public:
   {
     CGAL_precondition(!m_round_deleted.empty());
     std::uint16_t latest = 0;
+    const std::uint32_t level_of_i = burning_level(m_d2, i, m_offsets);
     for(int b = 0; b < 26; ++b)
     {
       const std::size_t j = std::size_t(std::ptrdiff_t(i) + m_offsets[b]);
-      if((m_state[j] & DELETED) && m_d2[j] == m_d2[i])
+      if((m_state[j] & DELETED) && burning_level(m_d2, j, m_offsets) == level_of_i)
         latest = (std::max)(latest, m_round_deleted[j]);
     }
     return double(latest);
@@ -273,34 +357,40 @@ private:
   std::vector<std::uint16_t> m_round_deleted; // by voxel: its level's round when deleted (from 1); empty when not recorded
   std::uint16_t m_round = 0;                  // the round of the level burning (from 1)
   std::vector<std::pair<std::uint32_t, std::uint32_t>> m_p_simple; // delete_p_simple()'s voxels and configurations
+  std::vector<std::uint32_t> m_thin_candidates, m_open;           // delete_thin_by_direction()'s
 };
 
-// The indices of the voxels of `state` (bit 0) sorted by increasing d2, then index:
-// a counting sort when the range of distances is small, else a comparison sort.
-inline std::vector<std::uint32_t> sorted_by_distance(const std::vector<std::uint8_t>& state,
-                                                     const std::uint32_t* d2)
+// The indices of the voxels of `state` (bit 0) sorted by increasing burning level
+// (burning_level(), over `layout`), then index: a counting sort when the range of levels
+// is small, else a comparison sort.
+inline std::vector<std::uint32_t> sorted_by_burning_level(const std::vector<std::uint8_t>& state,
+                                                          const std::uint32_t* d2, const Grid_layout& layout)
 {
+  // The levels are computed again in each pass rather than stored: 4 bytes per voxel of
+  // the set less at the thinning's peak.
+  const std::array<std::ptrdiff_t, 26> offsets = layout.neighbour_offsets();
+  const auto level_of = [&](std::uint32_t i) { return burning_level(d2, i, offsets); };
   std::vector<std::uint32_t> order;
-  std::uint32_t max_d2 = 0;
+  std::uint32_t max_level = 0;
   for(std::size_t i = 0; i < state.size(); ++i)
     if(state[i] & 1)
     {
       order.push_back(std::uint32_t(i));
-      max_d2 = (std::max)(max_d2, d2[i]);
+      max_level = (std::max)(max_level, level_of(std::uint32_t(i)));
     }
-  if(std::size_t(max_d2) <= 4 * order.size() + 1024)
+  if(std::size_t(max_level) <= 4 * order.size() + 1024)
   {
-    std::vector<std::uint32_t> start(std::size_t(max_d2) + 2, 0), sorted(order.size());
+    std::vector<std::uint32_t> start(std::size_t(max_level) + 2, 0), sorted(order.size());
     for(std::uint32_t i : order)
-      ++start[d2[i] + 1];
+      ++start[level_of(i) + 1];
     for(std::size_t v = 1; v < start.size(); ++v)
       start[v] += start[v - 1];
     for(std::uint32_t i : order)
-      sorted[start[d2[i]]++] = i;
+      sorted[start[level_of(i)]++] = i;
     return sorted;
   }
   std::stable_sort(order.begin(), order.end(),
-                   [d2](std::uint32_t a, std::uint32_t b) { return d2[a] < d2[b]; });
+                   [&](std::uint32_t a, std::uint32_t b) { return level_of(a) < level_of(b); });
   return order;
 }
 
