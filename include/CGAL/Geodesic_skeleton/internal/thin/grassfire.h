@@ -45,6 +45,19 @@ constexpr std::ptrdiff_t ridge_reach_in_steps = 2;
 // about two voxels thick, where every voxel is within sqrt(2) of the outside.
 constexpr std::uint32_t thin_part_d2 = 2;
 
+// Whether voxel i (of squared distances `d2`, 26 neighbours at `offsets`) is in a part
+// about two voxels thick: it and its 26 neighbours are within sqrt(thin_part_d2) of the
+// outside (a thin sheet, or a tube or an edge as thin).
+inline bool in_thin_part(const std::uint32_t* d2, std::size_t i, const std::array<std::ptrdiff_t, 26>& offsets)
+{
+  if(d2[i] > thin_part_d2)
+    return false;
+  for(std::ptrdiff_t o : offsets)
+    if(d2[std::size_t(std::ptrdiff_t(i) + o)] > thin_part_d2)
+      return false;
+  return true;
+}
+
 // The level at which the thinning burns a voxel of squared distance d2[i]: d2[i], except
 // on the stair steps of a thin slanted sheet. A sheet two voxels thick and slightly
 // tilted to the grid is three voxels thick along each line where its layers shift by
@@ -54,12 +67,7 @@ constexpr std::uint32_t thin_part_d2 = 2;
 // the way into a thicker part) burns with the sheet, at level 1.
 inline std::uint32_t burning_level(const std::uint32_t* d2, std::size_t i, const std::array<std::ptrdiff_t, 26>& offsets)
 {
-  if(d2[i] != thin_part_d2)
-    return d2[i];
-  for(std::ptrdiff_t o : offsets)
-    if(d2[std::size_t(std::ptrdiff_t(i) + o)] > thin_part_d2)
-      return d2[i];
-  return 1;
+  return d2[i] == thin_part_d2 && in_thin_part(d2, i, offsets) ? 1 : d2[i];
 }
 
 // The working state of the thinning over a padded box: bit 0 = in the set, bit 1 = queued,
@@ -215,17 +223,7 @@ public:
     return removed;
   }
 
-  // Whether i is in a part about two voxels thick: it and its 26 neighbours are within
-  // sqrt(thin_part_d2) of the outside (a thin sheet, or a tube or an edge as thin).
-  bool in_thin_part(std::size_t i) const
-  {
-    if(m_d2[i] > thin_part_d2)
-      return false;
-    for(std::ptrdiff_t o : m_offsets)
-      if(m_d2[std::size_t(std::ptrdiff_t(i) + o)] > thin_part_d2)
-        return false;
-    return true;
-  }
+  bool in_thin_part(std::size_t i) const { return internal::in_thin_part(m_d2, i, m_offsets); }
 
   // Queues voxel i of the set to burn in the next round, unless it is queued already.
   void queue(std::uint32_t i, std::vector<std::uint32_t>& round, std::size_t& round_size)
