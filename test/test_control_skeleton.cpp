@@ -6,6 +6,7 @@
 #include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
 #include <CGAL/Geodesic_skeleton/chord_to_point_distance_accumulation.h>
 #include <CGAL/Geodesic_skeleton/extract_control_skeleton.h>
+#include <CGAL/Geodesic_skeleton/sheet_half_widths.h>
 #include <CGAL/Geodesic_skeleton/smooth_skeleton.h>
 #include <CGAL/Geodesic_skeleton/split_into_bones.h>
 
@@ -519,6 +520,44 @@ BOOST_AUTO_TEST_CASE(the_smallest_radius_is_the_unit_of_thin_parts)
              num_edges(fine));
 }
 
+// The same wavy chain as a wing's chain: its MAT radius is the wing's half thickness, 0.1,
+// and its sheet half width is 1. Measured in the width, its waves are under the
+// straightness tolerance; the joints keep their MAT radius; a width under the radius
+// changes nothing.
+BOOST_AUTO_TEST_CASE(a_sheet_is_split_in_lengths_of_its_half_width)
+{
+  std::vector<Point> wave;
+  for(int i = 0; i <= 200; ++i)
+    wave.emplace_back(0.1 * i, 0.3 * std::sin(0.1 * i * pi / 2.), 0);
+  const Skeleton s = chain_skeleton(wave, 0.1);
+  const Control fine = bones_of(s, paper_split);
+  const std::vector<double> wide(num_vertices(s), 1.0), narrow(num_vertices(s), 0.05);
+  const Control in_width =
+      bones_of(s, gs::parameters::combine(paper_split, gs::parameters::sheet_half_width_map(CGAL::make_property_map(wide))));
+  BOOST_TEST(num_edges(fine) >= 8u);
+  BOOST_TEST(num_edges(in_width) <= 2u);
+  for(std::size_t j = 0; j < num_vertices(in_width); ++j)
+    BOOST_TEST(in_width[j].radius == 0.1);
+  BOOST_TEST(num_edges(bones_of(s, gs::parameters::combine(
+                                       paper_split, gs::parameters::sheet_half_width_map(CGAL::make_property_map(narrow))))) ==
+             num_edges(fine));
+}
+
+// sheet_half_widths(): a sheet radius of r rounds is r - 2 voxels (the two rounds that any
+// level may burn in say nothing of a sheet), never less than 0; a voxel without one is 0.
+BOOST_AUTO_TEST_CASE(sheet_half_widths_discount_the_rounds_of_any_level)
+{
+  Skeleton s = chain_skeleton(polyline({Point(0, 0, 0), Point(0, 0, 3)}, 1.0), 0.5);
+  BOOST_REQUIRE(num_vertices(s) == 4u);
+  for(std::size_t v = 0; v < 4; ++v)
+    s[v].voxel = gs::Voxel_key{0, 0, int(v)};
+  const gs::Sheet_radii radii{{gs::Voxel_key{0, 0, 0}, 12.0}, {gs::Voxel_key{0, 0, 1}, 2.0}, {gs::Voxel_key{0, 0, 2}, 1.0}};
+  const std::vector<double> widths = gs::sheet_half_widths(s, radii, 0.5);
+  BOOST_TEST(widths == (std::vector<double>{5.0, 0.0, 0.0, 0.0}), boost::test_tools::per_element());
+  for(double bad : {0.0, -1.0, std::nan(""), HUGE_VAL})
+    BOOST_CHECK_THROW(gs::sheet_half_widths(s, radii, bad), std::invalid_argument);
+}
+
 BOOST_AUTO_TEST_CASE(bad_parameters_throw)
 {
   const Skeleton s = chain_skeleton(polyline({Point(0, 0, 0), Point(0, 0, 30)}, 0.5), 2.0);
@@ -536,6 +575,10 @@ BOOST_AUTO_TEST_CASE(bad_parameters_throw)
     std::vector<double> radii(num_vertices(s), 2.0);
     radii[3] = bad;
     BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::mat_radius_map(CGAL::make_property_map(radii))),
+                      std::invalid_argument);
+    std::vector<double> widths(num_vertices(s), 0.0);
+    widths[3] = bad;
+    BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::sheet_half_width_map(CGAL::make_property_map(widths))),
                       std::invalid_argument);
   }
   Skeleton empty;

@@ -290,6 +290,37 @@ BOOST_AUTO_TEST_CASE(each_wing_of_a_winged_body_gets_one_chain_through_its_middl
   }
 }
 
+// A wing's chain is split in lengths of the wing's width (its sheet radius), not of its
+// thickness, which is about a voxel and shrinks with it: split in its thickness, each wing
+// got 6 or 7 joints, more on a finer grid. Each wing gets 2 to 4 joints (its tip included:
+// the joints more than 0.2 out, past the body's radius of 0.12), and as many at every
+// resolution.
+BOOST_AUTO_TEST_CASE(a_wing_gets_a_few_joints_whatever_the_resolution)
+{
+  const Mesh mesh = test::mesh_of<Mesh>(test::winged_body());
+  std::vector<std::size_t> joints_per_wing;
+  for(int resolution : {48, 64, 96, 128})
+  {
+    BOOST_TEST_CONTEXT("resolution " << resolution)
+    {
+      Control control;
+      gs::extract_control_skeleton(mesh, control, params::resolution(resolution));
+      std::size_t left = 0, right = 0;
+      for(const auto& j : test::joints(control))
+      {
+        left += j.point.y() < -0.2 ? 1 : 0;
+        right += j.point.y() > 0.2 ? 1 : 0;
+      }
+      BOOST_TEST(left >= 2u);
+      BOOST_TEST(left <= 4u);
+      BOOST_TEST(right == left);
+      joints_per_wing.push_back(left);
+    }
+  }
+  BOOST_TEST(*std::min_element(joints_per_wing.begin(), joints_per_wing.end()) ==
+             *std::max_element(joints_per_wing.begin(), joints_per_wing.end()));
+}
+
 BOOST_AUTO_TEST_CASE(remove_small_pieces_removes_exactly_the_small_ones)
 {
   // Three balls of radius 1, 0.5 and 0.2: at fraction 0.05 only the smallest (0.8 % of the

@@ -22,6 +22,7 @@
 #include <CGAL/Geodesic_skeleton/prune_skeleton.h>
 #include <CGAL/Geodesic_skeleton/reeb_graph.h>
 #include <CGAL/Geodesic_skeleton/remove_small_pieces.h>
+#include <CGAL/Geodesic_skeleton/sheet_half_widths.h>
 #include <CGAL/Geodesic_skeleton/skeleton_statistics.h>
 #include <CGAL/Geodesic_skeleton/smooth_skeleton.h>
 #include <CGAL/Geodesic_skeleton/split_into_bones.h>
@@ -30,6 +31,7 @@
 #include <CGAL/Geodesic_skeleton/voxelize.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/property_map.h>
 
 #include <boost/property_map/property_map.hpp>
 
@@ -378,7 +380,11 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   const double longest_extent = report.voxel_size * double(report.resolution);
   report.smallest_radius = choose_parameter(get_parameter(np, internal_np::smallest_radius_tag),
                                             longest_extent / (2. * default_voxel_resolution));
-  split_into_bones(curve, out, parameters::combine(parameters::smallest_radius(report.smallest_radius), curve_np));
+  // A thin sheet's chain is split in lengths of the sheet's width, as pruning judged it.
+  const std::vector<double> sheet_widths = sheet_half_widths(curve, sheet_radii, report.voxel_size);
+  split_into_bones(curve, out,
+                   parameters::combine(parameters::smallest_radius(report.smallest_radius),
+                                       parameters::sheet_half_width_map(CGAL::make_property_map(sheet_widths)), curve_np));
   report.joints_moved_inside = internal::joints_on_vertices(out, moved_inside);
   clock.finished("split_into_bones");
   if(Skeleton* curve_output = internal::output_pointer<Skeleton>(np, internal_np::curve_skeleton_output_tag))

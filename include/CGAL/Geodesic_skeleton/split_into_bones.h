@@ -83,13 +83,34 @@ std::vector<double> largest_radius_of_pieces(const CurveSkeleton& skeleton, cons
   return of_vertex;
 }
 
+// The `sheet_half_width_map` of `np` read at each vertex of `skeleton` (vertices numbered 0
+// to n-1); empty without one. Throws when a width is negative or not finite.
+template <typename CurveSkeleton, typename NamedParameters>
+std::vector<double> sheet_half_widths_of(const CurveSkeleton& skeleton, const NamedParameters& np)
+{
+  std::vector<double> widths;
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::sheet_half_width_map_t>::value)
+  {
+    const auto width_map = CGAL::parameters::get_parameter(np, internal_np::sheet_half_width_map_tag);
+    widths.resize(num_vertices(skeleton));
+    for(std::size_t v = 0; v < widths.size(); ++v)
+    {
+      widths[v] = static_cast<double>(get(width_map, v));
+      if(!(widths[v] >= 0) || !std::isfinite(widths[v]))
+        throw std::invalid_argument("split_into_bones: the sheet_half_width_map gives a negative or "
+                                    "non-finite width");
+    }
+  }
+  return widths;
+}
+
 // Algorithm 2 on a skeleton read through its point and radius maps: the body of
 // split_into_bones(), with the settings checked and `control` cleared; throws when a
-// radius is negative or not finite.
+// radius is negative or not finite. `sheet_half_widths` is empty or has one width per vertex.
 template <typename CurveSkeleton, typename VertexPointMap, typename RadiusMap, typename Point>
 void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPointMap& point_map,
-                                const RadiusMap& radius_map, const Bone_splitting_settings& settings,
-                                Control_skeleton<Point>& control)
+                                const RadiusMap& radius_map, const std::vector<double>& sheet_half_widths,
+                                const Bone_splitting_settings& settings, Control_skeleton<Point>& control)
 {
   const std::size_t n = num_vertices(skeleton);
   if(n == 0)
@@ -105,10 +126,16 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
   }
   auto radius = [&](std::size_t v) { return radii_of[v]; };
   // The radius that the lengths of the split are measured in: at least `smallest_radius`,
-  // so that parts thinner than it (which a finer grid measures thinner) get no more joints.
+  // so that parts thinner than it (which a finer grid measures thinner) get no more joints;
+  // in a thin sheet, its half width, so that a wing's chain gets the joints of a limb as
+  // wide, not of one as thin.
   std::vector<double> length_unit_of(n);
   for(std::size_t v = 0; v < n; ++v)
+  {
     length_unit_of[v] = (std::max)(radii_of[v], settings.smallest_radius);
+    if(!sheet_half_widths.empty())
+      length_unit_of[v] = (std::max)(length_unit_of[v], sheet_half_widths[v]);
+  }
   Joint_graph<Point> graph;
   std::vector<long> joint_of(n, -1);
   auto position = [&](std::size_t v) {
@@ -186,7 +213,8 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 /// (`chord_to_point_distance_accumulation()`) peaks at `bend_threshold` or more, or where
 /// it strays from its chord by more than `straightness_tolerance` MAT radii, never leaving
 /// a bone shorter than `minimum_bone_length_factor` MAT radii (each radius taken as at least
-/// `smallest_radius`); a straight bone longer than
+/// `smallest_radius`, and as at least the sheet's half width where a `sheet_half_width_map`
+/// gives one); a straight bone longer than
 /// `maximum_bone_length_factor` times the largest MAT radius of its connected component
 /// (the body's thickness; a straight limb has no bend to cut at) is cut
 /// into bones of about equal length, each cut at the narrowest point near its
@@ -275,6 +303,19 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 ///     \cgalParamDefault{0 (the MAT radius as it is); `extract_control_skeleton()` passes
 ///                       half a voxel of the default grid}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{sheet_half_width_map}
+///     \cgalParamDescription{at each skeleton vertex that runs through a thin sheet (a wing,
+///                           a fin, a cape), the sheet's half width, in world units; 0
+///                           elsewhere. Where it is larger than the radius, the lengths of the
+///                           split (chords, straightness, shortest and longest bone) are
+///                           measured in it instead: a sheet's chain gets the joints of a limb
+///                           as wide, not as thin; the joints keep their own radius. Each
+///                           value finite and at least 0 (package parameter)}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the skeleton's vertex descriptor
+///                    as key type and `double` as value type}
+///     \cgalParamDefault{none (0 everywhere); `extract_control_skeleton()` passes
+///                       `sheet_half_widths()` of its thinning's sheet radii}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{chord_length_factors}
 ///     \cgalParamDescription{the chord lengths of the accumulation, in MAT radii, each in
 ///                           [0.001, 1000] (package parameter)}
@@ -283,8 +324,8 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// \throws std::invalid_argument when a parameter is out of range or the radius map gives
-///         a negative or non-finite radius.
+/// \throws std::invalid_argument when a parameter is out of range, or the radius map or the
+///         sheet half width map gives a negative or non-finite value.
 ///
 /// \b Complexity: O(N log N * c) for N skeleton vertices and c chords per point in
 /// practice (each recursion level scans its part), plus O(J B log B) to root the J joints
@@ -302,7 +343,8 @@ void split_into_bones(const CurveSkeleton& skeleton, Control_skeleton<Point>& co
   control = Control_skeleton<Point>();
   if constexpr(internal::has_radius_map<CurveSkeleton, NamedParameters>())
     internal::split_into_bones_with_maps(skeleton, internal::skeleton_point_map(skeleton, np),
-                                         internal::skeleton_radius_map(skeleton, np), settings, control);
+                                         internal::skeleton_radius_map(skeleton, np),
+                                         internal::sheet_half_widths_of(skeleton, np), settings, control);
 }
 
 } // namespace Geodesic_skeleton

@@ -1,0 +1,72 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_GEODESIC_SKELETON_SHEET_HALF_WIDTHS_H
+#define CGAL_GEODESIC_SKELETON_SHEET_HALF_WIDTHS_H
+
+/// \file sheet_half_widths.h
+/// The half width of the thin sheet that each vertex of a curve skeleton runs through, in
+/// world units, from the sheet radii that `thin()` records.
+
+#include <CGAL/Geodesic_skeleton/Skeleton_radius_in_voxels_map.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+#include <vector>
+
+namespace CGAL {
+namespace Geodesic_skeleton {
+namespace internal {
+
+// The rounds in which a level that is not a sheet can burn: a shell around a limb or a body
+// burns in one or two (thin()'s sheet radius is 0, 1 or 2 there), so only the rounds beyond
+// these measure a sheet's width.
+constexpr double shell_rounds = 2;
+
+} // namespace internal
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// The half width, in world units, of the thin sheet (a wing, a fin, a cape) that each
+/// vertex of a curve skeleton runs through, 0 where it runs through none: the
+/// `sheet_half_width_map` that `extract_control_skeleton()` gives `split_into_bones()`, so
+/// that a sheet's chain is split in lengths of its width rather than of its thickness.
+///
+/// A vertex's sheet radius r (the rounds in which `thin()` burnt its level around it,
+/// 0 when `sheet_radii` has no entry for its voxel) gives (r - 2) voxels, at least 0: any
+/// level, a limb's shell too, burns in up to two rounds, which say nothing of a sheet.
+///
+/// \tparam CurveSkeleton an undirected `boost::adjacency_list` with `vecS` vertex storage
+///         whose vertex bundle has a `voxel` member (`Voxel_key`), e.g. the
+///         `Curve_skeleton<Point, MeshVertex>` that `to_graph()` writes.
+/// \param curve the curve skeleton, made by `to_graph()` from the voxels that `thin()` kept.
+/// \param sheet_radii the sheet radii that `thin()` recorded through its `sheet_radius_map`.
+/// \param voxel_size the edge length of a voxel of the grid `thin()` ran on (world units).
+/// \returns one width per vertex, indexed by vertex descriptor (0 to N-1): for example
+///          `CGAL::make_property_map(widths)` is a `sheet_half_width_map`.
+/// \pre every voxel of `curve` is in the grid whose voxels are `voxel_size` long.
+/// \throws std::invalid_argument when `voxel_size` is not finite and positive.
+///
+/// \b Complexity: O(N) expected for N vertices (one hash lookup each).
+template <typename CurveSkeleton>
+std::vector<double> sheet_half_widths(const CurveSkeleton& curve, const Sheet_radii& sheet_radii, double voxel_size)
+{
+  if(!(voxel_size > 0) || !std::isfinite(voxel_size))
+    throw std::invalid_argument("sheet_half_widths: the voxel size must be finite and positive");
+  std::vector<double> widths(num_vertices(curve), 0.0);
+  for(std::size_t v = 0; v < widths.size(); ++v)
+  {
+    const auto sheet = sheet_radii.find(curve[v].voxel);
+    if(sheet != sheet_radii.end())
+      widths[v] = (std::max)(0.0, sheet->second - internal::shell_rounds) * voxel_size;
+  }
+  return widths;
+}
+
+} // namespace Geodesic_skeleton
+} // namespace CGAL
+
+#endif // CGAL_GEODESIC_SKELETON_SHEET_HALF_WIDTHS_H
