@@ -169,7 +169,9 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 /// `thin()` also records the sheet radius of the voxels it keeps (its `sheet_radius_map`),
 /// and `prune_skeleton()` judges each voxel by the larger of its MAT radius and its sheet
 /// radius (`skeleton_radius_in_voxels_map()`), so that the twigs of a thin sheet (a wing, a
-/// fin, a plate) are pruned by the sheet's width, not its thickness.
+/// fin, a plate) are pruned by the sheet's width, not its thickness; `split_into_bones()`
+/// gets the same widths in world units (`sheet_half_widths()`, its `sheet_half_width_map`),
+/// so that a sheet's chain is split in lengths of its width.
 ///
 /// Between `thin()` and `prune_skeleton()`, `remove_small_pieces()` removes the skeletons
 /// of the detached pieces whose solid is smaller than `small_piece_fraction` of the largest
