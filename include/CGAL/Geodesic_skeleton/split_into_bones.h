@@ -83,25 +83,32 @@ std::vector<double> largest_radius_of_pieces(const CurveSkeleton& skeleton, cons
   return of_vertex;
 }
 
+// The lengths that `map` gives at vertices 0 to n-1; throws, with `error` as the message,
+// when one is negative or not finite.
+template <typename LengthMap>
+std::vector<double> checked_lengths(const LengthMap& map, std::size_t n, const char* error)
+{
+  std::vector<double> lengths(n);
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    lengths[v] = static_cast<double>(get(map, v));
+    if(!(lengths[v] >= 0) || !std::isfinite(lengths[v]))
+      throw std::invalid_argument(error);
+  }
+  return lengths;
+}
+
 // The `sheet_half_width_map` of `np` read at each vertex of `skeleton` (vertices numbered 0
 // to n-1); empty without one. Throws when a width is negative or not finite.
 template <typename CurveSkeleton, typename NamedParameters>
 std::vector<double> sheet_half_widths_of(const CurveSkeleton& skeleton, const NamedParameters& np)
 {
-  std::vector<double> widths;
-  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::sheet_half_width_map_t>::value)
-  {
-    const auto width_map = CGAL::parameters::get_parameter(np, internal_np::sheet_half_width_map_tag);
-    widths.resize(num_vertices(skeleton));
-    for(std::size_t v = 0; v < widths.size(); ++v)
-    {
-      widths[v] = static_cast<double>(get(width_map, v));
-      if(!(widths[v] >= 0) || !std::isfinite(widths[v]))
-        throw std::invalid_argument("split_into_bones: the sheet_half_width_map gives a negative or "
-                                    "non-finite width");
-    }
-  }
-  return widths;
+  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, internal_np::sheet_half_width_map_t>::value)
+    return {};
+  else
+    return checked_lengths(CGAL::parameters::get_parameter(np, internal_np::sheet_half_width_map_tag),
+                           num_vertices(skeleton),
+                           "split_into_bones: the sheet_half_width_map gives a negative or non-finite width");
 }
 
 // Algorithm 2 on a skeleton read through its point and radius maps: the body of
@@ -116,14 +123,8 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
   if(n == 0)
     return;
 
-  std::vector<double> radii_of(n);
-  for(std::size_t v = 0; v < n; ++v)
-  {
-    radii_of[v] = static_cast<double>(get(radius_map, v));
-    if(!(radii_of[v] >= 0) || !std::isfinite(radii_of[v]))
-      throw std::invalid_argument("split_into_bones: the MAT radius map gives a negative or "
-                                  "non-finite radius");
-  }
+  const std::vector<double> radii_of =
+      checked_lengths(radius_map, n, "split_into_bones: the MAT radius map gives a negative or non-finite radius");
   auto radius = [&](std::size_t v) { return radii_of[v]; };
   // The radius that the lengths of the split are measured in: at least `smallest_radius`,
   // so that parts thinner than it (which a finer grid measures thinner) get no more joints;
