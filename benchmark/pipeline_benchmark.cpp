@@ -123,8 +123,9 @@ Pruning_counts pruning_counts(const Mesh& mesh, int resolution)
   c.before = skeleton.size();
   c.branched_before = gs::count_skeleton_points(skeleton).branched_connection;
 
-  // The radius map that extract_control_skeleton() gives prune_skeleton().
-  const auto radius = gs::parameters::mat_radius_map(gs::skeleton_radius_in_voxels_map(distances, sheet_radii));
+  // The radius maps that extract_control_skeleton() gives prune_skeleton().
+  const auto radius = gs::parameters::combine(gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(distances)),
+                                              gs::parameters::sheet_radius_map(gs::sheet_radius_in_voxels_map(sheet_radii)));
   gs::Sparse_voxel_set algorithm_1 = skeleton;
   const gs::Pruning_report report_1 =
       gs::prune_skeleton(algorithm_1, gs::parameters::combine(radius, gs::parameters::spur_length_factor(0.0),

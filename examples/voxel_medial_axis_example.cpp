@@ -79,9 +79,11 @@ int main(int argc, char* argv[])
     const std::size_t cut = GS::cut_spurious_cycles(skeleton, mesh);
 
     // 5. The paper's pruning; twigs are snipped by the MAT radius (in voxels), or in a
-    //    thin sheet by its half width.
+    //    thin sheet by its half width, and so are the branches inside the MAT balls of
+    //    the rest of the skeleton.
     const GS::Pruning_report pruning = GS::prune_skeleton(
-        skeleton, GS::parameters::mat_radius_map(GS::skeleton_radius_in_voxels_map(distances, sheet_radii)));
+        skeleton, GS::parameters::combine(GS::parameters::mat_radius_map(GS::mat_radius_in_voxels_map(distances)),
+                                          GS::parameters::sheet_radius_map(GS::sheet_radius_in_voxels_map(sheet_radii))));
 
     // 6. The curve skeleton graph: points in the mesh's coordinates, radii, mesh vertices.
     GS::Curve_skeleton<Point, vertex_descriptor> curve;

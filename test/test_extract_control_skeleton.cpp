@@ -538,7 +538,8 @@ BOOST_AUTO_TEST_CASE(the_public_stages_composed_by_hand_give_the_same_skeleton)
       gs::remove_small_pieces(skeleton, distances);
       const std::size_t cut = gs::cut_spurious_cycles(skeleton, mesh, with_surface);
       gs::prune_skeleton(skeleton,
-                         gs::parameters::mat_radius_map(gs::skeleton_radius_in_voxels_map(distances, sheet_radii)));
+                         gs::parameters::combine(gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(distances)),
+                                                 gs::parameters::sheet_radius_map(gs::sheet_radius_in_voxels_map(sheet_radii))));
       Skeleton curve;
       gs::to_graph(skeleton, distances, mesh, curve, with_surface);
       gs::smooth_skeleton(curve);

@@ -350,6 +350,67 @@ BOOST_AUTO_TEST_CASE(the_level_of_detail_is_relative_to_each_piece)
   BOOST_TEST(!skeleton.contains(big.bump_end));
 }
 
+// A spine along x (radius 6) with parallel teeth along +y (radius 3, 23 voxels long), as
+// thinning leaves them in a thick sheet slanted in the grid. Each tooth reaches far out of
+// its junction's ball, but `spacing` 2 puts every tooth inside the balls of the next one.
+struct Comb
+{
+  std::vector<Voxel_key> voxels;
+  std::unordered_map<Voxel_key, double, gs::Voxel_key_hash> radius;
+  std::vector<Voxel_key> tips;
+};
+
+Comb comb(const std::vector<int>& teeth)
+{
+  Comb c;
+  add_segment(c.voxels, Voxel_key{-18, -12, 0}, Voxel_key{1, 0, 0}, 37);
+  for(const Voxel_key& k : c.voxels)
+    c.radius[k] = 6.0;
+  for(int x : teeth)
+  {
+    for(int y = -11; y <= 12; ++y)
+    {
+      c.voxels.push_back(Voxel_key{x, y, 0});
+      c.radius[c.voxels.back()] = 3.0;
+    }
+    c.tips.push_back(c.voxels.back());
+  }
+  return c;
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(of_teeth_inside_each_others_balls_one_stays, VoxelSet, Voxel_set_models)
+{
+  const Comb teeth = comb({-3, -1, 1, 3});
+  VoxelSet skeleton = voxel_set<VoxelSet>(teeth.voxels);
+  BOOST_TEST(gs::count_skeleton_points(skeleton).end == 6u);
+  const gs::Pruning_report report =
+      gs::prune_skeleton(skeleton, gs::parameters::mat_radius_map(boost::make_assoc_property_map(teeth.radius)));
+  // The spine's two ends and one tooth, whole.
+  BOOST_TEST(gs::count_skeleton_points(skeleton).end == 3u);
+  BOOST_TEST(report.snipped_branches == 3u);
+  const auto stays = [&](const Voxel_key& tip) { return skeleton.contains(tip); };
+  BOOST_TEST(std::count_if(teeth.tips.begin(), teeth.tips.end(), stays) == 1);
+  // With the balls of the rest out of the test (their junction's ball only), every tooth
+  // reaches 23 voxels out: all stay. The test's lever is the level of detail.
+  VoxelSet all_teeth = voxel_set<VoxelSet>(teeth.voxels);
+  gs::prune_skeleton(all_teeth, gs::parameters::combine(
+                                    gs::parameters::mat_radius_map(boost::make_assoc_property_map(teeth.radius)),
+                                    gs::parameters::limb_protrusion_factor(0.0)));
+  BOOST_TEST(gs::count_skeleton_points(all_teeth).end == 6u);
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(limbs_side_by_side_stay, VoxelSet, Voxel_set_models)
+{
+  // Two teeth 6 voxels apart touch (radius 3 each) without either centre line entering the
+  // other's balls: two limbs side by side, as fingers are. Both stay.
+  const Comb fingers = comb({-3, 3});
+  VoxelSet skeleton = voxel_set<VoxelSet>(fingers.voxels);
+  gs::prune_skeleton(skeleton, gs::parameters::mat_radius_map(boost::make_assoc_property_map(fingers.radius)));
+  for(const Voxel_key& tip : fingers.tips)
+    BOOST_TEST(skeleton.contains(tip));
+  BOOST_TEST(gs::count_skeleton_points(skeleton).end == 4u);
+}
+
 BOOST_AUTO_TEST_CASE_TEMPLATE(a_loop_keeps_its_cycle, VoxelSet, Voxel_set_models)
 {
   // A square loop with a thick corner and a twig: pruning may thin the corner and snip the
@@ -394,6 +455,9 @@ BOOST_AUTO_TEST_CASE(absurd_parameters_give_clear_exceptions)
   BOOST_CHECK_THROW(gs::prune_skeleton(skeleton, gs::parameters::mat_radius_map(
                                                      CGAL::Constant_property_map<Voxel_key, double>(-2.0))),
                     std::invalid_argument);
+  BOOST_CHECK_THROW(gs::prune_skeleton(skeleton, gs::parameters::sheet_radius_map(
+                                                     CGAL::Constant_property_map<Voxel_key, double>(std::nan("")))),
+                    std::invalid_argument);
 }
 
 // The thinned voxel skeleton of a mesh, and its shape after to_graph(), before and after
@@ -420,7 +484,9 @@ struct Pruned_mesh_skeleton
     gs::to_graph(voxels, field, mesh, graph);
     thinned = gs::skeleton_statistics(graph);
     // As extract_control_skeleton() prunes: by the MAT radius, or a sheet's half width.
-    gs::prune_skeleton(voxels, gs::parameters::mat_radius_map(gs::skeleton_radius_in_voxels_map(field, sheet_radii)));
+    gs::prune_skeleton(voxels,
+                       gs::parameters::combine(gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(field)),
+                                               gs::parameters::sheet_radius_map(gs::sheet_radius_in_voxels_map(sheet_radii))));
     pruned_points = gs::count_skeleton_points(voxels);
     gs::to_graph(voxels, field, mesh, graph);
     pruned = gs::skeleton_statistics(graph);
@@ -460,7 +526,9 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(a_thin_sheet_is_pruned_by_its_width, VoxelSet, Vox
              gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(sheet_radii)));
     VoxelSet by_thickness = plate;
     gs::prune_skeleton(by_thickness, gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(distances)));
-    gs::prune_skeleton(plate, gs::parameters::mat_radius_map(gs::skeleton_radius_in_voxels_map(distances, sheet_radii)));
+    gs::prune_skeleton(plate,
+                       gs::parameters::combine(gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(distances)),
+                                               gs::parameters::sheet_radius_map(gs::sheet_radius_in_voxels_map(sheet_radii))));
     BOOST_TEST(gs::count_skeleton_points(by_thickness).end > 10u, "thickness " << thickness);
     BOOST_TEST(gs::count_skeleton_points(plate).end <= 3u, "thickness " << thickness);
     BOOST_TEST(gs::count_skeleton_points(plate).total() >= std::size_t(length - width), "thickness " << thickness);

@@ -167,9 +167,11 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 /// junction).
 ///
 /// `thin()` also records the sheet radius of the voxels it keeps (its `sheet_radius_map`),
-/// and `prune_skeleton()` judges each voxel by the larger of its MAT radius and its sheet
-/// radius (`skeleton_radius_in_voxels_map()`), so that the twigs of a thin sheet (a wing, a
-/// fin, a plate) are pruned by the sheet's width, not its thickness; `split_into_bones()`
+/// and `prune_skeleton()` gets them beside the MAT radii (its `sheet_radius_map` and
+/// `mat_radius_map`): it judges each voxel by the larger of the two radii, so that the
+/// twigs of a thin sheet (a wing, a fin, a plate) are pruned by the sheet's width, not its
+/// thickness, and snips the end branches that lie inside the MAT balls of the rest of the
+/// skeleton (the comb of parallel curves that thinning leaves in a thick sheet); `split_into_bones()`
 /// gets the same widths in world units (`sheet_half_widths()`, its `sheet_half_width_map`),
 /// so that a sheet's chain is split in lengths of its width.
 ///
@@ -355,8 +357,8 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   clock.finished("cut_spurious_cycles");
 
   report.pruning =
-      prune_skeleton(skeleton, parameters::combine(
-                                   parameters::mat_radius_map(skeleton_radius_in_voxels_map(distances, sheet_radii)), np));
+      prune_skeleton(skeleton, parameters::combine(parameters::mat_radius_map(mat_radius_in_voxels_map(distances)),
+                                                   parameters::sheet_radius_map(sheet_radius_in_voxels_map(sheet_radii)), np));
   clock.finished("prune");
 
   Skeleton curve;

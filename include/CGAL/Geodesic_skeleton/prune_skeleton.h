@@ -44,16 +44,23 @@ struct Pruning_report
 /// Algorithm 1 keeps, in each branched region (a 26-connected group of branched connection
 /// points), only the voxels on the shortest paths inside the skeleton from the region's
 /// centroid to its terminators. The snipping removes an end branch that is shorter than
-/// `spur_length_factor` times the MAT radius at its junction, or whose MAT balls reach out
-/// of its junction's ball by less than `limb_protrusion_factor` times the largest MAT
-/// radius of its piece of the skeleton (a bump, a hoof's cleft, a sheet's rim: detail
-/// smaller than the level of detail of the rig), most spurious first, while the skeleton
-/// goes on past the junction. An end branch is traced through any lump of branched points
+/// `spur_length_factor` times the radius at its junction, or whose balls reach out of the
+/// balls that hold them by less than `limb_protrusion_factor` times the largest radius of
+/// its piece of the skeleton: out of its junction's ball (a bump, a hoof's cleft, a
+/// sheet's rim) or, voxel by voxel, out of the maximal balls of the rest of the skeleton
+/// that contain the voxel (a tooth of the comb of parallel curves that thinning leaves in
+/// a thick sheet, a knuckle inside a fist): detail smaller than the level of detail of the
+/// rig. Branches are snipped most spurious first, each while the skeleton goes on past its
+/// junction and while it is still a spur once the branches before it are gone (of two
+/// parallel teeth, one stays). An end branch is traced through any lump of branched points
 /// that only two branches leave. When the voxels show no spur left, the same tests run on the
 /// end branches of the skeleton's graph as `to_graph()` makes it, which also has ends that
-/// voxel degrees hide (a voxel hanging on a lump, a tip that is a little triangle). Both thresholds are ratios of lengths of the shape, so
-/// that the same features are kept at every resolution that resolves them. The steps are
-/// described in the manual, section \ref manual_prune_method.
+/// voxel degrees hide (a voxel hanging on a lump, a tip that is a little triangle). Both
+/// thresholds are ratios of lengths of the shape, so that the same features are kept at
+/// every resolution that resolves them. The radius that judges a voxel is its MAT radius,
+/// or its sheet radius where that is larger (in a thin sheet, the sheet's half width); the
+/// balls are the MAT balls. The steps are described in the manual, section
+/// \ref manual_prune_method.
 ///
 /// The result is deterministic (it does not depend on the set's iteration order).
 /// Pruning never disconnects a component (every terminator stays linked to its
@@ -70,14 +77,23 @@ struct Pruning_report
 ///   \cgalParamNBegin{mat_radius_map}
 ///     \cgalParamDescription{the radius of the medial axis transform at each skeleton voxel,
 ///                           in voxels, e.g. the square root of the squared distance
-///                           transform (`mat_radius_in_voxels_map()`); in a thin sheet, better
-///                           the sheet's half width that `thin()` measures
-///                           (`skeleton_radius_in_voxels_map()`, which
-///                           `extract_control_skeleton()` gives) (package parameter)}
+///                           transform (`mat_radius_in_voxels_map()`): the radius of the
+///                           largest ball centred there inside the shape (package parameter)}
 ///     \cgalParamType{a model of `ReadablePropertyMap` with `Voxel_key` as key type and a
 ///                    number as value type}
 ///     \cgalParamDefault{1 voxel everywhere, which makes the snipping threshold an absolute
 ///                       length in voxels}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{sheet_radius_map}
+///     \cgalParamDescription{the sheet radius of each skeleton voxel, in voxels, as `thin()`
+///                           records it (`sheet_radius_in_voxels_map()`): in a thin sheet,
+///                           the sheet's half width. Where it is larger than the MAT radius,
+///                           it judges the voxel's twigs, so that the twigs of a sheet are
+///                           pruned by the sheet's width, not its thickness
+///                           (`extract_control_skeleton()` gives it) (package parameter)}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `Voxel_key` as key type and a
+///                    number as value type}
+///     \cgalParamDefault{0 everywhere: the MAT radius judges}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{spur_length_factor}
 ///     \cgalParamDescription{the threshold of the snipping, in MAT radii at the junction, in
@@ -87,10 +103,10 @@ struct Pruning_report
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{limb_protrusion_factor}
 ///     \cgalParamDescription{the level of detail of the snipping: how far, in units of the
-///                           largest MAT radius of its piece of the skeleton, the MAT balls of
-///                           an end branch must reach out of its junction's ball for the
-///                           branch to stay, in [0, 100]; 0 turns this test off (package
-///                           parameter)}
+///                           largest radius of its piece of the skeleton, the balls of an end
+///                           branch must reach out of its junction's ball and out of the MAT
+///                           balls of the rest of the skeleton for the branch to stay, in
+///                           [0, 100]; 0 turns this test off (package parameter)}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{0.75}
 ///   \cgalParamNEnd
@@ -98,11 +114,14 @@ struct Pruning_report
 ///
 /// \returns what was removed, and how many rounds of snipping were made.
 /// \throws std::invalid_argument when `spur_length_factor` or `limb_protrusion_factor` is
-///         out of range or a radius is negative or not finite.
+///         out of range or a radius or sheet radius is negative or not finite.
 ///
-/// \b Complexity: O(N log N) for N skeleton voxels per round of snipping (one Dijkstra per
-/// region, over the region; each end branch traced and its protrusion measured once), a
-/// few rounds in practice; O(N) extra memory.
+/// \b Complexity: O(N log N + V M) for N skeleton voxels per round of snipping (one Dijkstra
+/// per region, over the region; each end branch traced once), where the protrusions of the
+/// end branches read V voxels (from the tip inwards, until the branch is known to stay) and
+/// each compares M balls, those whose centre is within the largest MAT radius of it along
+/// the third axis (O(N) at worst; a small part of the skeleton in practice); a few rounds
+/// in practice; O(N) extra memory.
 template <typename VoxelSet, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Pruning_report prune_skeleton(VoxelSet& skeleton,
                               const NamedParameters& np = CGAL::parameters::default_values())
@@ -120,16 +139,24 @@ Pruning_report prune_skeleton(VoxelSet& skeleton,
       choose_parameter(get_parameter(np, internal_np::limb_protrusion_factor_tag),
                        parameter_ranges::limb_protrusion_factor.default_value),
       "prune_skeleton");
-  const auto radius_map = choose_parameter(get_parameter(np, internal_np::mat_radius_map_tag),
-                                           CGAL::Constant_property_map<Voxel_key, double>(1.0));
-  auto radius = [&](const Voxel_key& k) {
-    const double r = static_cast<double>(get(radius_map, k));
+  const auto mat_radius_map = choose_parameter(get_parameter(np, internal_np::mat_radius_map_tag),
+                                               CGAL::Constant_property_map<Voxel_key, double>(1.0));
+  const auto sheet_radius_map = choose_parameter(get_parameter(np, internal_np::sheet_radius_map_tag),
+                                                 CGAL::Constant_property_map<Voxel_key, double>(0.0));
+  auto checked = [](double r, const char* map) {
     if(!(r >= 0) || !std::isfinite(r))
-      throw std::invalid_argument("prune_skeleton: the MAT radius map gives a negative or "
-                                  "non-finite radius");
+      throw std::invalid_argument(std::string("prune_skeleton: the ") + map +
+                                  " gives a negative or non-finite radius");
     return r;
   };
-
+  auto mat_radius = [&](const Voxel_key& k) {
+    return checked(static_cast<double>(get(mat_radius_map, k)), "MAT radius map");
+  };
+  // A twig is judged by the larger of the two radii: in a thin sheet, its width.
+  auto radius = [&](const Voxel_key& k) {
+    return (std::max)(mat_radius(k), checked(static_cast<double>(get(sheet_radius_map, k)), "sheet radius map"));
+  };
+  const auto radii = internal::snipping_radii(radius, mat_radius);
   // Snipping a twig can leave a small cluster of branched points where it hung, and
   // Algorithm 1 can turn a junction into a plain end branch: alternate the two until
   // neither changes anything.
@@ -146,9 +173,9 @@ Pruning_report prune_skeleton(VoxelSet& skeleton,
     internal::Snipping snipped;
     if(factor > 0 || protrusion_factor > 0)
     {
-      snipped = internal::snip_spurious_branches_once(skeleton, radius, thresholds);
+      snipped = internal::snip_spurious_branches_once(skeleton, radii, thresholds);
       if(snipped.branches == 0) // what is left that the graph, not the voxels, shows as ends
-        snipped = internal::snip_spurious_graph_branches_once(skeleton, radius, thresholds);
+        snipped = internal::snip_spurious_graph_branches_once(skeleton, radii, thresholds);
     }
     report.snipped_branches += snipped.branches;
     report.snipped_points += snipped.points;

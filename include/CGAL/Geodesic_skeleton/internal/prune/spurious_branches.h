@@ -9,6 +9,7 @@
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
 #include <CGAL/Geodesic_skeleton/internal/prune/branched_regions.h>
+#include <CGAL/Geodesic_skeleton/internal/prune/covering_balls.h>
 
 #include <CGAL/Geodesic_skeleton/internal/to_graph/skeleton_adjacency.h>
 #include <CGAL/Geodesic_skeleton/internal/voxel_components.h>
@@ -174,18 +175,35 @@ bool trace_end_branch(const VoxelSet& skeleton, const Voxel_key& end, End_branch
 }
 
 // The thresholds of the snipping: an end branch is a spur when it is shorter than
-// `spur_length_factor` MAT radii at its junction, or when its MAT balls reach less than
-// `limb_protrusion_factor` times the largest MAT radius of its skeleton piece out of its
-// junction's ball. A factor 0 turns its test off.
+// `spur_length_factor` radii at its junction, or when its balls reach less than
+// `limb_protrusion_factor` times the largest radius of its skeleton piece out of its
+// junction's ball and out of the maximal balls of the rest of the skeleton. A factor 0
+// turns its test off.
 struct Spur_thresholds
 {
   double spur_length_factor = 0;
   double limb_protrusion_factor = 0;
-  // The largest MAT radius of the piece of the skeleton each voxel is in.
+  // The largest radius of the piece of the skeleton each voxel is in.
   std::unordered_map<Voxel_key, double, Voxel_key_hash> largest_radius_of_piece;
 };
 
-// The largest MAT radius of each 26-connected piece of `skeleton`, recorded for every voxel.
+// The radii of a skeleton voxel that the snipping reads, in voxels: `judging(k)` measures
+// twigs (the MAT radius, or the sheet radius where a thin sheet's is larger) and `ball(k)`
+// is the radius of the maximal ball centred at k (the MAT radius).
+template <typename JudgingRadius, typename BallRadius>
+struct Snipping_radii
+{
+  JudgingRadius judging;
+  BallRadius ball;
+};
+
+template <typename JudgingRadius, typename BallRadius>
+Snipping_radii<JudgingRadius, BallRadius> snipping_radii(const JudgingRadius& judging, const BallRadius& ball)
+{
+  return {judging, ball};
+}
+
+// The largest radius of each 26-connected piece of `skeleton`, recorded for every voxel.
 template <typename VoxelSet, typename Radius>
 std::unordered_map<Voxel_key, double, Voxel_key_hash> largest_radius_of_pieces(const VoxelSet& skeleton,
                                                                                const Radius& radius)
@@ -204,32 +222,60 @@ std::unordered_map<Voxel_key, double, Voxel_key_hash> largest_radius_of_pieces(c
   return of_voxel;
 }
 
-// How far the MAT balls of `branch` reach out of the ball of its junction: the largest
-// |k - junction| + r(k) - r(junction) over its voxels k (voxels).
-template <typename Radius>
-double protrusion_of(const End_branch& branch, const Radius& radius)
+// How far the balls of `branch` reach out of the rest of the skeleton (voxels): the
+// largest, over the branch's voxels k, of how little k's ball reaches out of a ball that
+// holds k, |k - c| + r(k) - r(c) for a ball centred at c, among
+// - its junction's ball, with the judging radii, and
+// - the maximal balls of the voxels still in `skeleton`, not on the branch, that contain
+//   k, with the ball radii.
+// A branch inside its junction's ball (a bump, a short stub) reaches out little; so does
+// one inside the balls of the rest of the skeleton, such as a tooth of a comb of parallel
+// curves that thinning left in a thick sheet. The voxels are taken from the tip inwards,
+// and the count stops at `enough`.
+template <typename VoxelSet, typename Radii>
+double protrusion_of(const End_branch& branch, const Radii& radii, const VoxelSet& skeleton,
+                     const Covering_balls& balls, double enough)
 {
-  double reach = 0;
+  std::vector<Voxel_key> own(branch.voxels);
+  std::sort(own.begin(), own.end());
+  const double junction_radius = radii.judging(branch.junction);
+  double protrusion = 0;
   for(const Voxel_key& k : branch.voxels)
-    reach = std::max(reach, std::sqrt(double(squared_distance_between(k, branch.junction))) + radius(k));
-  return reach - radius(branch.junction);
+  {
+    double reach = std::sqrt(double(squared_distance_between(k, branch.junction))) + radii.judging(k) - junction_radius;
+    if(reach <= protrusion)
+      continue;
+    const double ball_radius = radii.ball(k);
+    balls.for_each_ball_containing(k, [&](const Covering_balls::Ball& ball, double distance) {
+      const double out_of_ball = distance + ball_radius - ball.radius;
+      if(out_of_ball < reach && skeleton.contains(ball.centre) &&
+         !std::binary_search(own.begin(), own.end(), ball.centre))
+        reach = out_of_ball;
+    });
+    protrusion = std::max(protrusion, reach);
+    if(protrusion >= enough)
+      break;
+  }
+  return protrusion;
 }
 
 // How spurious `branch` is: the smaller of its length over the spur length and its
 // protrusion (protrusion_of()) over the smallest limb protrusion (each infinite when its
-// test is off).
-template <typename Radius>
-double spuriousness_of(const End_branch& branch, const Radius& radius, const Spur_thresholds& thresholds)
+// test is off; the latter at most 1).
+template <typename VoxelSet, typename Radii>
+double spuriousness_of(const End_branch& branch, const Radii& radii, const Spur_thresholds& thresholds,
+                       const VoxelSet& skeleton, const Covering_balls& balls)
 {
   double s = std::numeric_limits<double>::infinity();
-  const double junction_radius = std::max(radius(branch.junction), 1e-12);
+  const double junction_radius = std::max(radii.judging(branch.junction), 1e-12);
   if(thresholds.spur_length_factor > 0)
     s = branch.length / (thresholds.spur_length_factor * junction_radius);
   if(thresholds.limb_protrusion_factor > 0)
   {
     const auto piece = thresholds.largest_radius_of_piece.find(branch.junction);
     const double largest = piece != thresholds.largest_radius_of_piece.end() ? piece->second : junction_radius;
-    s = std::min(s, protrusion_of(branch, radius) / (thresholds.limb_protrusion_factor * std::max(largest, 1e-12)));
+    const double smallest_limb = thresholds.limb_protrusion_factor * std::max(largest, 1e-12);
+    s = std::min(s, protrusion_of(branch, radii, skeleton, balls, smallest_limb) / smallest_limb);
   }
   return s;
 }
@@ -241,14 +287,15 @@ struct Snipping
 
 // The branches among `branches` that `thresholds` calls spurs, with their spuriousness,
 // the most spurious first (ties by end voxel).
-template <typename Radius>
-std::vector<End_branch> spurs_among(std::vector<End_branch> branches, const Radius& radius,
-                                    const Spur_thresholds& thresholds)
+template <typename VoxelSet, typename Radii>
+std::vector<End_branch> spurs_among(std::vector<End_branch> branches, const Radii& radii,
+                                    const Spur_thresholds& thresholds, const VoxelSet& skeleton,
+                                    const Covering_balls& balls)
 {
   std::vector<End_branch> spurs;
   for(End_branch& branch : branches)
   {
-    branch.spuriousness = spuriousness_of(branch, radius, thresholds);
+    branch.spuriousness = spuriousness_of(branch, radii, thresholds, skeleton, balls);
     if(branch.spuriousness < 1)
       spurs.push_back(std::move(branch));
   }
@@ -277,9 +324,10 @@ Snipping snip_in_order(VoxelSet& skeleton, const std::vector<End_branch>& spurs,
 }
 
 // One round: snips the end branches that `thresholds` calls spurs, the most spurious
-// first, each only while three branches or more leave its junction.
-template <typename VoxelSet, typename Radius>
-Snipping snip_spurious_branches_once(VoxelSet& skeleton, const Radius& radius, const Spur_thresholds& thresholds)
+// first, each only while three branches or more leave its junction and while it is still a
+// spur (the balls of the branches snipped before it no longer hold it).
+template <typename VoxelSet, typename Radii>
+Snipping snip_spurious_branches_once(VoxelSet& skeleton, const Radii& radii, const Spur_thresholds& thresholds)
 {
   std::vector<Voxel_key> ends;
   skeleton.for_each([&](const Voxel_key& k) {
@@ -295,10 +343,14 @@ Snipping snip_spurious_branches_once(VoxelSet& skeleton, const Radius& radius, c
     if(trace_end_branch(skeleton, end, branch))
       branches.push_back(std::move(branch));
   }
-  return snip_in_order(skeleton, spurs_among(std::move(branches), radius, thresholds), [&](const End_branch& spur) {
-    // Earlier snips of this round may have changed this branch's junction.
+  const Covering_balls balls(skeleton, radii.ball);
+  return snip_in_order(skeleton, spurs_among(std::move(branches), radii, thresholds, skeleton, balls),
+                       [&](const End_branch& spur) {
+    // Earlier snips of this round may have changed this branch's junction, or removed the
+    // balls that held it.
     return skeleton.contains(spur.voxels.front()) && skeleton.contains(spur.junction) &&
-           branches_at_junction(skeleton, spur.junction) >= 3;
+           branches_at_junction(skeleton, spur.junction) >= 3 &&
+           spuriousness_of(spur, radii, thresholds, skeleton, balls) < 1;
   });
 }
 
@@ -356,15 +408,17 @@ Graph_end_branches graph_end_branches(const VoxelSet& skeleton)
 
 // One round over the graph's end branches (graph_end_branches()): snips those that
 // `thresholds` calls spurs, the most spurious first, each only while its junction keeps
-// three branches or more in the graph.
-template <typename VoxelSet, typename Radius>
-Snipping snip_spurious_graph_branches_once(VoxelSet& skeleton, const Radius& radius,
+// three branches or more in the graph and while it is still a spur.
+template <typename VoxelSet, typename Radii>
+Snipping snip_spurious_graph_branches_once(VoxelSet& skeleton, const Radii& radii,
                                            const Spur_thresholds& thresholds)
 {
   Graph_end_branches graph = graph_end_branches(skeleton);
-  return snip_in_order(skeleton, spurs_among(std::move(graph.branches), radius, thresholds), [&](const End_branch& spur) {
+  const Covering_balls balls(skeleton, radii.ball);
+  return snip_in_order(skeleton, spurs_among(std::move(graph.branches), radii, thresholds, skeleton, balls),
+                       [&](const End_branch& spur) {
     std::size_t& branches = graph.junction_degree[spur.junction];
-    if(branches < 3)
+    if(branches < 3 || !(spuriousness_of(spur, radii, thresholds, skeleton, balls) < 1))
       return false;
     --branches;
     return true;
