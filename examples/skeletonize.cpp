@@ -74,7 +74,7 @@ struct Options
   double small_piece_fraction = ranges::small_piece_fraction.default_value;
   double spur_length_factor = ranges::spur_length_factor.default_value;
   double limb_protrusion_factor = ranges::limb_protrusion_factor.default_value;
-  int smoothing_window = static_cast<int>(ranges::smoothing_window.default_value);
+  std::optional<int> smoothing_window; // none: the library's default for the resolution
   double bend_threshold = ranges::bend_threshold.default_value;
   double straightness_tolerance = ranges::straightness_tolerance.default_value;
   double minimum_bone_length_factor = ranges::minimum_bone_length_factor.default_value;
@@ -107,7 +107,8 @@ const Numeric_option numeric_options[] = {
     {"--spur-length", "F", ranges::spur_length_factor, "snip end branches shorter than F MAT radii"},
     {"--limb-protrusion", "F", ranges::limb_protrusion_factor,
      "level of detail: snip end branches reaching less than F largest MAT radii out of their junction"},
-    {"--smoothing-window", "W", ranges::smoothing_window, "points averaged along branches"},
+    {"--smoothing-window", "W", ranges::smoothing_window, "points averaged along branches",
+     "5 at resolution 64, scaled with it: 9 at 128"},
     {"--bend-threshold", "T", ranges::bend_threshold, "chord-to-point accumulation that makes a joint"},
     {"--straightness", "S", ranges::straightness_tolerance, "allowed bone deviation in MAT radii"},
     {"--min-bone-length", "F", ranges::minimum_bone_length_factor, "shortest bone in MAT radii"},
@@ -507,7 +508,8 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
         params::resolution(o.resolution), params::fill_holes(o.fill_holes),
         params::keep_surface_voxels(o.keep_surface_voxels), params::small_piece_fraction(o.small_piece_fraction),
         params::spur_length_factor(o.spur_length_factor),
-        params::limb_protrusion_factor(o.limb_protrusion_factor), params::smoothing_window(o.smoothing_window),
+        params::limb_protrusion_factor(o.limb_protrusion_factor),
+        params::smoothing_window(o.smoothing_window.value_or(gs::default_smoothing_window(o.resolution))),
         params::bend_threshold(o.bend_threshold), params::straightness_tolerance(o.straightness_tolerance),
         params::minimum_bone_length_factor(o.minimum_bone_length_factor),
         params::maximum_bone_length_factor(o.maximum_bone_length_factor),
@@ -577,7 +579,7 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
                         {"small_piece_fraction", o.small_piece_fraction},
                         {"spur_length_factor", o.spur_length_factor},
                         {"limb_protrusion_factor", o.limb_protrusion_factor},
-                        {"smoothing_window", o.smoothing_window},
+                        {"smoothing_window", report.smoothing_window},
                         {"bend_threshold", o.bend_threshold},
                         {"straightness_tolerance", o.straightness_tolerance},
                         {"minimum_bone_length_factor", o.minimum_bone_length_factor},

@@ -61,6 +61,7 @@ struct Control_skeleton_report
   std::size_t curve_points_moved_inside = 0; ///< curve-skeleton points that lay outside the (closed) mesh and were moved in
   std::size_t joints_moved_inside = 0; ///< joints on those points: they moved in with them
   double smallest_radius = 0;      ///< the `smallest_radius` the split used, given or default (world units)
+  int smoothing_window = 0;        ///< the `smoothing_window` the smoothing used, given or default (points)
   std::size_t reeb_nodes = 0;      ///< nodes of the Reeb graph, when one was asked for
   std::size_t reeb_edges = 0;      ///< arcs of the Reeb graph, when one was asked for
   /// Wall-clock time of each stage in milliseconds, in the order they ran: "voxelize",
@@ -234,9 +235,12 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 ///     \cgalParamDefault{0.75}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{smoothing_window}
-///     \cgalParamDescription{the setting of `smooth_skeleton()`}
+///     \cgalParamDescription{the setting of `smooth_skeleton()`: the number of consecutive
+///                           points averaged, an odd number in [1, 1001]}
 ///     \cgalParamType{`int`}
-///     \cgalParamDefault{5}
+///     \cgalParamDefault{`default_smoothing_window(resolution)`: the paper's 5 at the
+///                       default resolution, in proportion to the resolution elsewhere (7 at
+///                       96, 9 at 128), so that the window spans the same length of the shape}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{bend_threshold, straightness_tolerance, minimum_bone_length_factor, maximum_bone_length_factor, chord_length_factors}
 ///     \cgalParamDescription{the settings of `split_into_bones()`}
@@ -370,7 +374,10 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   using Curve_vertex = Curve_skeleton_vertex<Point, vertex_descriptor>;
   const auto curve_np = parameters::combine(parameters::vertex_point_map(get(&Curve_vertex::point, curve)),
                                             parameters::mat_radius_map(get(&Curve_vertex::radius, curve)), np);
-  smooth_skeleton(curve, curve_np);
+  // The paper's 5 points at the default resolution span the same length at any other.
+  report.smoothing_window = choose_parameter(get_parameter(np, internal_np::smoothing_window_tag),
+                                             default_smoothing_window(report.resolution));
+  smooth_skeleton(curve, parameters::combine(parameters::smoothing_window(report.smoothing_window), curve_np));
   clock.finished("smooth");
 
   const std::vector<std::size_t> moved_inside = move_skeleton_inside(mesh, curve, with_surface);

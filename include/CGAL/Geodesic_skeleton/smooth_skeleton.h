@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -27,6 +28,24 @@
 
 namespace CGAL {
 namespace Geodesic_skeleton {
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// The smoothing window that `extract_control_skeleton()` uses when none is given: the
+/// paper's 5 points at the default resolution (`default_voxel_resolution`), and in
+/// proportion to the resolution elsewhere, so that the window spans about the same length
+/// of the shape (2.5 voxels of the default grid on either side) whatever the grid: 2
+/// round(2 `resolution` / 64) + 1 points, at least 3. At resolutions 48 and 64: 5; at 96:
+/// 7; at 128: 9. A window of a fixed number of points averages half the length of the shape
+/// on a grid twice as fine, and leaves it the voxel wiggles that the split counts as bends.
+/// \param resolution the resolution of the voxel grid (`resolution` named parameter).
+///
+/// \b Complexity: O(1).
+inline int default_smoothing_window(int resolution)
+{
+  const long half = std::lround(2.0 * double(resolution) / double(default_voxel_resolution));
+  const long largest_half = long(parameter_ranges::smoothing_window.high) / 2;
+  return int(2 * (std::min)((std::max)(half, 1L), largest_half) + 1);
+}
 
 /// \ingroup PkgGeodesicSkeletonRef
 /// Smooths a curve skeleton in place: every point that is neither an end point nor a
@@ -77,7 +96,8 @@ namespace Geodesic_skeleton {
 ///     \cgalParamDescription{the number of consecutive points averaged, an odd number in
 ///                           [1, 1001]; 1 changes nothing (package parameter)}
 ///     \cgalParamType{`int`}
-///     \cgalParamDefault{5, the paper's}
+///     \cgalParamDefault{5, the paper's (`extract_control_skeleton()` scales it with the
+///                       resolution: `default_smoothing_window()`)}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
