@@ -41,7 +41,8 @@ namespace Geodesic_skeleton {
 /// crosses the gap between the parts, outside the mesh: removing the skeleton voxels on
 /// either side of the gap opens it. While the skeleton has more cycles than the mesh has
 /// handles, skeleton voxels with a step that leaves the mesh are removed where that opens a
-/// cycle without splitting a connected component. The method, what it keeps and its limits
+/// cycle without splitting a connected component, the cycles counted on the graph of the
+/// voxels left (as `to_graph()` would make it). The method, what it keeps and its limits
 /// are described in the manual, section \ref manual_cut_spurious_cycles.
 ///
 /// \tparam VoxelSet a model of `VoxelSet`. Whatever the model, its voxels are indexed in a
@@ -82,7 +83,9 @@ namespace Geodesic_skeleton {
 ///
 /// \b Complexity: O(S log S + M + F) for S skeleton voxels, M mesh vertices and edges and
 ///    F faces (plus the grid cells the faces cover along each axis), and O(S) per run of
-///    voxels tried; nothing beyond counting the cycles when there are no more than handles.
+///    voxels tried (the graph of the voxels left is built anew), per pass, a pass repeated
+///    only while it opens cycles; nothing beyond counting the cycles when there are no more
+///    than handles.
 template <typename VoxelSet, typename FaceGraph,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 std::size_t cut_spurious_cycles(VoxelSet& skeleton, const FaceGraph& mesh,

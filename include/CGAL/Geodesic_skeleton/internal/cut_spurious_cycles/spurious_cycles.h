@@ -223,25 +223,39 @@ private:
   const Grid_line_crossings& m_g;
 };
 
-// cut_spurious_cycles() with its inside tests against `mesh_lines` (a callable returning
-// the mesh's Grid_line_crossings in the frame of the skeleton, called only when there are
-// more cycles than handles).
-template <typename VoxelSet, typename FaceGraph, typename MeshLines>
-std::size_t cut_spurious_cycles_impl(VoxelSet& skeleton, const FaceGraph& mesh, MeshLines& mesh_lines)
+// The components and cycle rank of the skeleton's graph without the `removed` nodes of
+// `graph`, the graph built anew on the voxels left: a removed voxel can free an edge that a
+// junction triangle through it hid, and that edge can close again the cycle the removal
+// opened, which the restriction of `graph` would not show. `node_of(k)` is the index in
+// `graph` of voxel k, or -1.
+template <typename NodeOf>
+std::pair<std::size_t, std::size_t> components_and_cycles_left(const Skeleton_adjacency& graph,
+                                                               const std::vector<bool>& removed,
+                                                               const NodeOf& node_of)
 {
-  if(skeleton.size() == 0 || num_faces(mesh) == 0)
-    return 0;
-  const Grid_layout layout(require_nonempty_box(skeleton, 0, "cut_spurious_cycles"));
-  const Skeleton_adjacency graph = skeleton_adjacency(skeleton, layout);
-  std::vector<bool> removed(graph.nodes.size(), false);
-  const auto [components, initial_cycles] = components_and_cycles(graph, removed);
-  if(initial_cycles == 0)
-    return 0;
-  const std::size_t handles = capped_genus_sum(mesh);
-  if(initial_cycles <= handles)
-    return 0;
+  std::vector<Voxel_key> left;
+  std::vector<std::int32_t> index_left(graph.nodes.size(), -1);
+  for(std::size_t v = 0; v < graph.nodes.size(); ++v)
+    if(!removed[v])
+    {
+      index_left[v] = std::int32_t(left.size());
+      left.push_back(graph.nodes[v]);
+    }
+  const Skeleton_adjacency rebuilt = skeleton_adjacency(std::move(left), [&](const Voxel_key& k) {
+    const std::int32_t v = node_of(k);
+    return v >= 0 ? index_left[std::size_t(v)] : std::int32_t(-1);
+  });
+  return components_and_cycles(rebuilt, std::vector<bool>(rebuilt.nodes.size(), false));
+}
 
-  // The voxels on cycles with a step to another one that leaves the mesh's inside.
+// What a pass of the cut tries removing, in order: single voxels of `graph` on cycles with a
+// step out of the mesh's inside (those whose every step leaves, i.e. whose centre is
+// outside, first, then by the number of steps out: a voxel of the cycle on a side of the
+// gap), then runs of such voxels (connected groups, shortest first), for where removing one
+// voxel would split the skeleton.
+template <typename MeshLines>
+std::vector<std::vector<std::size_t>> cut_trials(const Skeleton_adjacency& graph, MeshLines& mesh_lines)
+{
   const std::vector<bool> on_cycle = nodes_on_cycles(graph);
   std::vector<std::pair<Voxel_key, Voxel_key>> steps;
   std::vector<std::size_t> step_edge;
@@ -263,10 +277,6 @@ std::size_t cut_spurious_cycles_impl(VoxelSet& skeleton, const FaceGraph& mesh, 
       leaving_steps[std::size_t(end)] += leaves[k];
     }
 
-  // What to try removing, in order: single voxels with a step out (those whose every step
-  // leaves, i.e. whose centre is outside, first, then by the number of steps out: a voxel
-  // of the cycle on a side of the gap), then runs of such voxels (connected groups,
-  // shortest first), for where removing one voxel would split the skeleton.
   std::vector<std::size_t> singles;
   for(std::size_t v = 0; v < graph.nodes.size(); ++v)
     if(leaving_steps[v] > 0)
@@ -301,9 +311,30 @@ std::size_t cut_spurious_cycles_impl(VoxelSet& skeleton, const FaceGraph& mesh, 
   for(auto& run : runs)
     if(run.size() > 1)
       trials.push_back(std::move(run));
+  return trials;
+}
+
+// One pass of the cut over the skeleton's graph as it is: tries `cut_trials()` in order,
+// keeping each removal that lowers the number of cycles (counted on the graph rebuilt
+// without the removed voxels) without splitting a component, while there are more cycles
+// than `handles`. Returns the number of cycles left.
+template <typename VoxelSet, typename MeshLines>
+std::size_t cut_pass(VoxelSet& skeleton, const Grid_layout& layout, MeshLines& mesh_lines, std::size_t handles)
+{
+  const Skeleton_adjacency graph = skeleton_adjacency(skeleton, layout);
+  std::vector<bool> removed(graph.nodes.size(), false);
+  const auto [components, initial_cycles] = components_and_cycles(graph, removed);
+  if(initial_cycles <= handles)
+    return initial_cycles;
+  std::vector<std::int32_t> node_at(layout.volume(), -1);
+  for(std::size_t v = 0; v < graph.nodes.size(); ++v)
+    node_at[layout.index(graph.nodes[v])] = std::int32_t(v);
+  const auto node_of = [&](const Voxel_key& k) {
+    return layout.box.contains(k) ? node_at[layout.index(k)] : std::int32_t(-1);
+  };
 
   std::size_t cycles = initial_cycles;
-  for(const auto& trial : trials)
+  for(const auto& trial : cut_trials(graph, mesh_lines))
   {
     if(cycles <= handles)
       break;
@@ -316,7 +347,7 @@ std::size_t cut_spurious_cycles_impl(VoxelSet& skeleton, const FaceGraph& mesh, 
       }
     if(fresh.empty())
       continue;
-    const auto [c, b1] = components_and_cycles(graph, removed);
+    const auto [c, b1] = components_and_cycles_left(graph, removed, node_of);
     if(c == components && b1 < cycles)
       cycles = b1;
     else
@@ -326,6 +357,32 @@ std::size_t cut_spurious_cycles_impl(VoxelSet& skeleton, const FaceGraph& mesh, 
   for(std::size_t v = 0; v < graph.nodes.size(); ++v)
     if(removed[v])
       skeleton.erase(graph.nodes[v]);
+  return cycles;
+}
+
+// cut_spurious_cycles() with its inside tests against `mesh_lines` (a callable returning
+// the mesh's Grid_line_crossings in the frame of the skeleton, called only when there are
+// more cycles than handles). Passes are repeated while they open cycles: a removal can
+// free edges whose steps the next pass tests.
+template <typename VoxelSet, typename FaceGraph, typename MeshLines>
+std::size_t cut_spurious_cycles_impl(VoxelSet& skeleton, const FaceGraph& mesh, MeshLines& mesh_lines)
+{
+  if(skeleton.size() == 0 || num_faces(mesh) == 0)
+    return 0;
+  const Grid_layout layout(require_nonempty_box(skeleton, 0, "cut_spurious_cycles"));
+  const std::size_t initial_cycles =
+      components_and_cycles(skeleton_adjacency(skeleton, layout), std::vector<bool>(skeleton.size(), false)).second;
+  if(initial_cycles == 0)
+    return 0;
+  const std::size_t handles = capped_genus_sum(mesh);
+  std::size_t cycles = initial_cycles;
+  while(cycles > handles)
+  {
+    const std::size_t left = cut_pass(skeleton, layout, mesh_lines, handles);
+    if(left >= cycles)
+      break;
+    cycles = left;
+  }
   return initial_cycles - cycles;
 }
 
