@@ -261,7 +261,8 @@ double protrusion_of(const End_branch& branch, const Radii& radii, const VoxelSe
 
 // How spurious `branch` is: the smaller of its length over the spur length and its
 // protrusion (protrusion_of()) over the smallest limb protrusion (each infinite when its
-// test is off; the latter at most 1).
+// test is off). The protrusion is measured only until it reaches the smallest limb
+// protrusion: past 1, its ratio says only that the branch is no spur by that test.
 template <typename VoxelSet, typename Radii>
 double spuriousness_of(const End_branch& branch, const Radii& radii, const Spur_thresholds& thresholds,
                        const VoxelSet& skeleton, const Covering_balls& balls)
