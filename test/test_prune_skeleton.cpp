@@ -458,6 +458,13 @@ BOOST_AUTO_TEST_CASE(absurd_parameters_give_clear_exceptions)
   BOOST_CHECK_THROW(gs::prune_skeleton(skeleton, gs::parameters::sheet_radius_map(
                                                      CGAL::Constant_property_map<Voxel_key, double>(std::nan("")))),
                     std::invalid_argument);
+  // A sheet radius map that refers to no radii reads 0 everywhere: the MAT radius judges.
+  BOOST_TEST(get(gs::Sheet_radius_in_voxels_map{}, Voxel_key{1, 2, 3}) == 0.);
+  gs::Sparse_voxel_set without_sheets = voxel_set<gs::Sparse_voxel_set>(thick_junction_with_three_arms());
+  gs::Sparse_voxel_set by_mat_radius = without_sheets;
+  gs::prune_skeleton(without_sheets, gs::parameters::sheet_radius_map(gs::Sheet_radius_in_voxels_map{}));
+  gs::prune_skeleton(by_mat_radius);
+  BOOST_TEST((contents(without_sheets) == contents(by_mat_radius)));
 }
 
 // The thinned voxel skeleton of a mesh, and its shape after to_graph(), before and after

@@ -36,11 +36,13 @@ struct Sheet_radius_in_voxels_map
   using reference = double;                          ///< returned by value
   using category = boost::readable_property_map_tag; ///< readable only
 
-  const Sheet_radii* sheet_radii = nullptr; ///< the sheet radii read
+  const Sheet_radii* sheet_radii = nullptr; ///< the sheet radii read (none when null)
 
   /// The sheet radius of `k` in voxels, 0 when it has none.
   friend double get(const Sheet_radius_in_voxels_map& map, const Voxel_key& k)
   {
+    if(map.sheet_radii == nullptr)
+      return 0.;
     const auto sheet = map.sheet_radii->find(k);
     return sheet == map.sheet_radii->end() ? 0. : sheet->second;
   }
