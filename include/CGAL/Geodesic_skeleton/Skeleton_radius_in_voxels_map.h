@@ -82,11 +82,8 @@ struct Skeleton_radius_in_voxels_map
   /// The radius of `k` in voxels.
   friend double get(const Skeleton_radius_in_voxels_map& map, const Voxel_key& k)
   {
-    const double mat_radius = get(Mat_radius_in_voxels_map{map.field}, k);
-    if(map.sheet_radii == nullptr)
-      return mat_radius;
-    const auto sheet = map.sheet_radii->find(k);
-    return sheet == map.sheet_radii->end() ? mat_radius : (std::max)(mat_radius, sheet->second);
+    return (std::max)(get(Mat_radius_in_voxels_map{map.field}, k),
+                      get(Sheet_radius_in_voxels_map{map.sheet_radii}, k));
   }
 };
 

@@ -314,26 +314,19 @@ std::vector<std::vector<std::size_t>> cut_trials(const Skeleton_adjacency& graph
   return trials;
 }
 
-// One pass of the cut over the skeleton's graph as it is: tries `cut_trials()` in order,
-// keeping each removal that lowers the number of cycles (counted on the graph rebuilt
-// without the removed voxels) without splitting a component, while there are more cycles
-// than `handles`. Returns the number of cycles left.
+// One pass of the cut over `indexed`, the skeleton's graph as it is, which has `cycles`
+// cycles, more than `handles`: tries `cut_trials()` in order, keeping each removal that
+// lowers the number of cycles (counted on the graph rebuilt without the removed voxels)
+// without splitting a component, while there are more cycles than `handles`. Returns the
+// number of cycles left.
 template <typename VoxelSet, typename MeshLines>
-std::size_t cut_pass(VoxelSet& skeleton, const Grid_layout& layout, MeshLines& mesh_lines, std::size_t handles)
+std::size_t cut_pass(VoxelSet& skeleton, const Indexed_skeleton_adjacency& indexed, std::size_t cycles,
+                     MeshLines& mesh_lines, std::size_t handles)
 {
-  const Skeleton_adjacency graph = skeleton_adjacency(skeleton, layout);
+  const Skeleton_adjacency& graph = indexed.graph;
   std::vector<bool> removed(graph.nodes.size(), false);
-  const auto [components, initial_cycles] = components_and_cycles(graph, removed);
-  if(initial_cycles <= handles)
-    return initial_cycles;
-  std::vector<std::int32_t> node_at(layout.volume(), -1);
-  for(std::size_t v = 0; v < graph.nodes.size(); ++v)
-    node_at[layout.index(graph.nodes[v])] = std::int32_t(v);
-  const auto node_of = [&](const Voxel_key& k) {
-    return layout.box.contains(k) ? node_at[layout.index(k)] : std::int32_t(-1);
-  };
-
-  std::size_t cycles = initial_cycles;
+  const std::size_t components = components_and_cycles(graph, removed).first;
+  const auto node_of = [&](const Voxel_key& k) { return indexed.node_of(k); };
   for(const auto& trial : cut_trials(graph, mesh_lines))
   {
     if(cycles <= handles)
@@ -370,18 +363,20 @@ std::size_t cut_spurious_cycles_impl(VoxelSet& skeleton, const FaceGraph& mesh, 
   if(skeleton.size() == 0 || num_faces(mesh) == 0)
     return 0;
   const Grid_layout layout(require_nonempty_box(skeleton, 0, "cut_spurious_cycles"));
+  Indexed_skeleton_adjacency indexed = indexed_skeleton_adjacency(skeleton, layout);
   const std::size_t initial_cycles =
-      components_and_cycles(skeleton_adjacency(skeleton, layout), std::vector<bool>(skeleton.size(), false)).second;
+      components_and_cycles(indexed.graph, std::vector<bool>(indexed.graph.nodes.size(), false)).second;
   if(initial_cycles == 0)
     return 0;
   const std::size_t handles = capped_genus_sum(mesh);
   std::size_t cycles = initial_cycles;
   while(cycles > handles)
   {
-    const std::size_t left = cut_pass(skeleton, layout, mesh_lines, handles);
+    const std::size_t left = cut_pass(skeleton, indexed, cycles, mesh_lines, handles);
     if(left >= cycles)
       break;
     cycles = left;
+    indexed = indexed_skeleton_adjacency(skeleton, layout);
   }
   return initial_cycles - cycles;
 }

@@ -61,18 +61,37 @@ std::vector<Voxel_key> sorted_voxels(const VoxelSet& skeleton)
   return nodes;
 }
 
-// With a dense index over `layout`, which covers the skeleton's voxels (its box may be
-// larger): 4 bytes per voxel of the box.
+// The graph of a voxel skeleton with the dense index of its nodes over a layout that
+// covers the skeleton's voxels (its box may be larger): 4 bytes per voxel of the box.
+struct Indexed_skeleton_adjacency
+{
+  Skeleton_adjacency graph;
+  Grid_layout layout;
+  std::vector<std::int32_t> node_at; // per voxel of the layout's box: its node, or -1
+
+  // The node of voxel `k`, or -1.
+  std::int32_t node_of(const Voxel_key& k) const
+  {
+    return layout.box.contains(k) ? node_at[layout.index(k)] : std::int32_t(-1);
+  }
+};
+
+template <typename VoxelSet>
+Indexed_skeleton_adjacency indexed_skeleton_adjacency(const VoxelSet& skeleton, const Grid_layout& layout)
+{
+  Indexed_skeleton_adjacency indexed{{}, layout, std::vector<std::int32_t>(layout.volume(), -1)};
+  std::vector<Voxel_key> nodes = sorted_voxels(skeleton);
+  for(std::size_t v = 0; v < nodes.size(); ++v)
+    indexed.node_at[layout.index(nodes[v])] = std::int32_t(v);
+  indexed.graph = skeleton_adjacency(std::move(nodes), [&](const Voxel_key& k) { return indexed.node_of(k); });
+  return indexed;
+}
+
+// With a dense index over `layout` (indexed_skeleton_adjacency()), dropped once built.
 template <typename VoxelSet>
 Skeleton_adjacency skeleton_adjacency(const VoxelSet& skeleton, const Grid_layout& layout)
 {
-  std::vector<Voxel_key> nodes = sorted_voxels(skeleton);
-  std::vector<std::int32_t> node_at(layout.volume(), -1);
-  for(std::size_t v = 0; v < nodes.size(); ++v)
-    node_at[layout.index(nodes[v])] = std::int32_t(v);
-  return skeleton_adjacency(std::move(nodes), [&](const Voxel_key& k) {
-    return layout.box.contains(k) ? node_at[layout.index(k)] : std::int32_t(-1);
-  });
+  return indexed_skeleton_adjacency(skeleton, layout).graph;
 }
 
 // With a hash index: memory proportional to the skeleton, not to its box.
