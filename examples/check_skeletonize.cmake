@@ -85,6 +85,18 @@ if(NOT given_smallest_radius EQUAL 0.25)
   message(FATAL_ERROR "--smallest-radius 0.25: the JSON says ${given_smallest_radius}")
 endif()
 
+# The thinning's thin-part radius: by default the library's (sqrt(2) voxels up to the
+# default resolution), reported; a given one is used and reported as given.
+string(JSON default_thin_part_radius GET "${stdout}" parameters thin_part_radius)
+if(NOT (default_thin_part_radius GREATER 1.414 AND default_thin_part_radius LESS 1.415))
+  message(FATAL_ERROR "the default thin_part_radius at 32 is ${default_thin_part_radius}, not sqrt(2)")
+endif()
+run(${MESH} --resolution 32 --thin-part-radius 2.5)
+string(JSON given_thin_part_radius GET "${stdout}" parameters thin_part_radius)
+if(NOT given_thin_part_radius EQUAL 2.5)
+  message(FATAL_ERROR "--thin-part-radius 2.5: the JSON says ${given_thin_part_radius}")
+endif()
+
 # The other formats: the OBJ and the polylines hold every bone, cut or not.
 string(JSON cut_bones LENGTH "${json}" control cut_bones)
 math(EXPR all_bones "${bones} + ${cut_bones}")

@@ -484,8 +484,11 @@ struct Pruned_mesh_skeleton
                                                        gs::parameters::resolution(resolution)));
     const gs::Voxel_distance_field field = gs::distance_transform(voxels);
     gs::Sheet_radii sheet_radii;
+    // As extract_control_skeleton() thins: the parts thin at the default resolution are thin.
     gs::thin(voxels, field,
-             gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(sheet_radii)));
+             gs::parameters::combine(
+                 gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(sheet_radii)),
+                 gs::parameters::thin_part_radius(gs::default_thin_part_radius(resolution))));
     thinned_points = gs::count_skeleton_points(voxels);
     gs::Curve_skeleton<Mesh::Point, Mesh::Vertex_index> graph;
     gs::to_graph(voxels, field, mesh, graph);

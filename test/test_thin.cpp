@@ -370,6 +370,72 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(thin_measures_the_half_width_of_a_thin_sheet, Voxe
   });
 }
 
+// A sheet 3.5 to 4.4 voxels thick and slanted in the grid (a wing at resolution 128 that
+// is about two voxels thick at 64) has middle voxels at 2 and at sqrt(5) from the outside,
+// side by side along its stair steps: with the default thin-part radius, both sheets below
+// thin to a comb of three to five chains, with sheet radii of at most 5. With a thin-part radius of 2 sqrt(2) (the default of
+// extract_control_skeleton() at 128) they burn at one level, from the sheet's rim: one
+// chain runs along the sheet's middle and its sheet radius is the sheet's half width.
+BOOST_AUTO_TEST_CASE_TEMPLATE(a_thicker_thin_sheet_burns_from_its_rim, VoxelSet, Voxel_set_models)
+{
+  const double half_width = 15;
+  // (At steeper slants, 37 degrees, such a sheet still thins to a comb of chains: its
+  // middle voxels step across more than one level.)
+  const struct { double thickness, slant_degrees; } sheets[] = {{3.5, 10}, {4.4, 25}};
+  for(const auto& sheet : sheets)
+  {
+    BOOST_TEST_CONTEXT("thickness " << sheet.thickness << ", slant " << sheet.slant_degrees << " degrees")
+    {
+      const double c = std::cos(sheet.slant_degrees * M_PI / 180), s = std::sin(sheet.slant_degrees * M_PI / 180);
+      VoxelSet set = voxels_where<VoxelSet>(
+          gs::Voxel_box{gs::Voxel_key{0, -25, -25}, gs::Voxel_key{60, 26, 26}}, [&](int, int y, int z) {
+            return std::abs(c * y + s * z) <= half_width && std::abs(-s * y + c * z) <= sheet.thickness / 2;
+          });
+      const gs::Voxel_distance_field distances = gs::distance_transform(set);
+      std::uint32_t deepest = 0;
+      set.for_each([&](const gs::Voxel_key& k) { deepest = (std::max)(deepest, distances.squared_distance(k)); });
+      BOOST_TEST_REQUIRE(deepest > 2u); // thicker than a thin part of the default radius
+      BOOST_TEST_REQUIRE(deepest <= 8u);
+
+      gs::Sheet_radii radii;
+      gs::thin(set, distances,
+               gs::parameters::combine(
+                   gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(radii)),
+                   gs::parameters::thin_part_radius(gs::default_thin_part_radius(128))));
+      int middle = 0;
+      set.for_each([&](const gs::Voxel_key& k) {
+        if(k.x < 20 || k.x >= 40)
+          return;
+        ++middle;
+        BOOST_TEST(radii.at(k) >= half_width - 5);
+        BOOST_TEST(radii.at(k) <= half_width + 1);
+      });
+      BOOST_TEST(middle == 20); // one voxel per column: one chain
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(the_default_thin_part_radius_grows_above_the_default_resolution)
+{
+  BOOST_TEST(gs::default_thin_part_radius(64) == std::sqrt(2.));
+  BOOST_TEST(gs::default_thin_part_radius(48) == std::sqrt(2.));
+  BOOST_TEST(gs::default_thin_part_radius(4) == std::sqrt(2.));
+  BOOST_TEST(gs::default_thin_part_radius(96) == 1.5 * std::sqrt(2.));
+  BOOST_TEST(gs::default_thin_part_radius(128) == 2 * std::sqrt(2.));
+}
+
+BOOST_AUTO_TEST_CASE(a_thin_part_radius_out_of_range_is_refused)
+{
+  const gs::Voxel_box box{gs::Voxel_key{0, 0, 0}, gs::Voxel_key{10, 3, 3}};
+  for(double radius : {-1., 1000.5, std::nan(""), HUGE_VAL})
+  {
+    gs::Sparse_voxel_set bar = voxels_where<gs::Sparse_voxel_set>(box, [](int, int, int) { return true; });
+    const gs::Voxel_distance_field distances = gs::distance_transform(bar);
+    BOOST_CHECK_THROW(gs::thin(bar, distances, gs::parameters::thin_part_radius(radius)), std::invalid_argument);
+    BOOST_TEST(bar.size() == 90u); // refused before any voxel went
+  }
+}
+
 BOOST_AUTO_TEST_CASE(both_models_give_the_same_skeleton)
 {
   const gs::Voxel_box box{gs::Voxel_key{-16, -16, -8}, gs::Voxel_key{17, 17, 9}};

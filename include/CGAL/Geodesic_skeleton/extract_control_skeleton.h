@@ -61,6 +61,7 @@ struct Control_skeleton_report
   std::size_t curve_points_moved_inside = 0; ///< curve-skeleton points that lay outside the (closed) mesh and were moved in
   std::size_t joints_moved_inside = 0; ///< joints on those points: they moved in with them
   double smallest_radius = 0;      ///< the `smallest_radius` the split used, given or default (world units)
+  double thin_part_radius = 0;     ///< the `thin_part_radius` the thinning used, given or default (voxels)
   int smoothing_window = 0;        ///< the `smoothing_window` the smoothing used, given or default (points)
   std::size_t reeb_nodes = 0;      ///< nodes of the Reeb graph, when one was asked for
   std::size_t reeb_edges = 0;      ///< arcs of the Reeb graph, when one was asked for
@@ -144,6 +145,10 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
                     choose_parameter(get_parameter(np, internal_np::limb_protrusion_factor_tag),
                                      ranges::limb_protrusion_factor.default_value),
                     caller);
+  checked_parameter(ranges::thin_part_radius,
+                    choose_parameter(get_parameter(np, internal_np::thin_part_radius_tag),
+                                     ranges::thin_part_radius.default_value),
+                    caller);
   checked_parameter(ranges::smoothing_window,
                     choose_parameter(get_parameter(np, internal_np::smoothing_window_tag),
                                      static_cast<int>(ranges::smoothing_window.default_value)),
@@ -218,6 +223,14 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 ///                           `cut_spurious_cycles()`)}
 ///     \cgalParamType{as for `voxelize()`}
 ///     \cgalParamDefault{as for `voxelize()`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{thin_part_radius}
+///     \cgalParamDescription{the setting of `thin()`: the largest MAT radius of a thin part,
+///                           in voxels, in [0, 1000]}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`default_thin_part_radius(resolution)`: sqrt(2) voxels at the
+///                       default resolution and below, in proportion to the resolution above
+///                       it (2 sqrt(2) at 128), so that the same parts of the shape are thin}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{small_piece_fraction}
 ///     \cgalParamDescription{the setting of `remove_small_pieces()`}
@@ -334,10 +347,14 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   const Voxel_distance_field distances = distance_transform(solid, np);
   clock.finished("distance_transform");
 
-  // The sheet radii let pruning judge the twigs of a thin sheet by its width.
+  // The sheet radii let pruning judge the twigs of a thin sheet by its width; the parts
+  // thin at the default resolution are thin at any other.
+  report.thin_part_radius = choose_parameter(get_parameter(np, internal_np::thin_part_radius_tag),
+                                             default_thin_part_radius(report.resolution));
   Sheet_radii sheet_radii;
   thin(solid, distances,
-       parameters::combine(parameters::sheet_radius_map(boost::associative_property_map<Sheet_radii>(sheet_radii)), np));
+       parameters::combine(parameters::sheet_radius_map(boost::associative_property_map<Sheet_radii>(sheet_radii)),
+                           parameters::thin_part_radius(report.thin_part_radius), np));
   Sparse_voxel_set skeleton;
   skeleton.reset(solid.frame(), solid.bounding_box());
   solid.for_each([&](const Voxel_key& k) { skeleton.insert(k); });

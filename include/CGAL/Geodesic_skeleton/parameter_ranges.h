@@ -67,6 +67,9 @@ inline constexpr Parameter_range memory_limit{"memory_limit", 1, std::numeric_li
 /// default grid (the mesh's longest principal extent / 128) unless told otherwise.
 inline constexpr Parameter_range smallest_radius{"smallest_radius", 0, std::numeric_limits<double>::infinity(),
                                                  0., false, false};
+/// `thin()`: the largest MAT radius of a thin part, in voxels (sqrt(2): a part about two
+/// voxels thick). `extract_control_skeleton()` gives `default_thin_part_radius()`.
+inline constexpr Parameter_range thin_part_radius{"thin_part_radius", 0, 1000, 1.4142135623730951, false, false};
 /// `prune_skeleton()`: end branches shorter than this many MAT radii are snipped.
 inline constexpr Parameter_range spur_length_factor{"spur_length_factor", 0, 100, 1.2, false, false};
 /// `prune_skeleton()`: end branches whose MAT balls reach out of their junction's ball by

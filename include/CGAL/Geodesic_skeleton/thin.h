@@ -13,6 +13,7 @@
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
 #include <CGAL/Geodesic_skeleton/internal/thin/grassfire.h>
 #include <CGAL/Geodesic_skeleton/internal/thin/simple_point.h>
+#include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -28,15 +29,33 @@ namespace CGAL {
 namespace Geodesic_skeleton {
 
 /// \ingroup PkgGeodesicSkeletonRef
+/// The `thin_part_radius` that `extract_control_skeleton()` gives `thin()`: sqrt(2) voxels
+/// (a part about two voxels thick) at the default resolution (`default_voxel_resolution`)
+/// and below, and in proportion to the resolution above it, so that a part counts as thin
+/// at every resolution when it does at the default one: sqrt(2) max(1, `resolution` / 64)
+/// voxels, 2 sqrt(2) at 128. On a grid twice as fine a wing is twice as many voxels thick;
+/// with a thin-part radius in voxels its middle layer is left the stair steps of the grid
+/// and thins to a comb of chains, not to the wing's own middle curve.
+/// \param resolution the resolution of the voxel grid (`resolution` named parameter).
+///
+/// \b Complexity: O(1).
+inline double default_thin_part_radius(int resolution)
+{
+  const double default_radius = parameter_ranges::thin_part_radius.default_value;
+  return default_radius * (std::max)(1.0, double(resolution) / double(default_voxel_resolution));
+}
+
+/// \ingroup PkgGeodesicSkeletonRef
 /// Thins `voxels` to a one-voxel-thick curve skeleton by distance-ordered homotopic
 /// thinning (the grassfire of Blum, in the discrete form of Pudney 1998): the voxels are
 /// visited by increasing distance to the outside, and a voxel is deleted when it is
 /// <i>simple</i> (its deletion changes no component, cavity or tunnel) and is not the end
 /// of a curve on the medial axis. The result has as many 26-components, tunnels and
 /// cavities as the input, and lies on the ridge of the distance field, within about a
-/// voxel. In a part about two voxels thick (a wing, a fin, a thin tube) the distance is
-/// flat, and the voxels there burn by face direction from the part's rim, so that a thin
-/// sheet keeps its middle curve, not one along its rim or its stair steps in the grid. The
+/// voxel. In a thin part (a wing, a fin, a thin tube: about two voxels thick, or up to
+/// `thin_part_radius`) the distance is flat, and the voxels there burn by face direction
+/// from the part's rim, so that a thin sheet keeps its middle curve, not one along its rim
+/// or its stair steps in the grid. The
 /// method (the protection of curve ends, the rounds of a level, thin parts, the
 /// guarantees, the simple-point test) is described in the manual, section
 /// \ref manual_thin.
@@ -61,6 +80,17 @@ namespace Geodesic_skeleton {
 ///                     by two voxels; 7 with a `sheet_radius_map`) plus at most 28 per
 ///                     voxel of the set, is checked before allocating.}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{thin_part_radius}
+///     \cgalParamDescription{the largest MAT radius of a thin part, in voxels, in [0, 1000]:
+///                           a voxel is in a thin part when it and its 26 neighbours are
+///                           within this distance of the outside; there the voxels burn by
+///                           face direction, and the middle voxels of a slanted sheet's
+///                           stair steps (no deeper neighbour, less than half a voxel deeper
+///                           than a neighbour) burn with the sheet (package parameter)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{sqrt(2), a part about two voxels thick; `extract_control_skeleton()`
+///                       gives `default_thin_part_radius()`, in proportion to the resolution}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{sheet_radius_map}
 ///     \cgalParamDescription{receives the <i>sheet radius</i> of every voxel that the thinning
 ///                           keeps, in voxels: the number of rounds that its level of
@@ -83,7 +113,7 @@ namespace Geodesic_skeleton {
 ///
 /// \returns the number of voxels erased.
 /// \pre `voxels` is not empty.
-/// \throws std::invalid_argument when `voxels` is empty.
+/// \throws std::invalid_argument when `voxels` is empty or `thin_part_radius` is out of range.
 /// \throws std::length_error when the work arrays would need more than `memory_limit`.
 ///
 /// \b Complexity: O(B + N) time and memory for B voxels in the set's bounding box and N in
@@ -95,6 +125,11 @@ std::size_t thin(VoxelSet& voxels, const VoxelDistanceField& distances,
                  const NamedParameters& np = CGAL::parameters::default_values())
 {
   const char* caller = "thin";
+  const double thin_part_radius = internal::checked_parameter(
+      parameter_ranges::thin_part_radius,
+      CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::thin_part_radius_tag),
+                                         parameter_ranges::thin_part_radius.default_value),
+      caller);
   const Voxel_box box = internal::require_nonempty_box(voxels, 2, caller);
   const internal::Grid_layout layout(box);
   constexpr bool records_sheet_radii =
@@ -109,8 +144,9 @@ std::size_t thin(VoxelSet& voxels, const VoxelDistanceField& distances,
   const std::uint32_t* d2 = copied_d2.data();
 
   std::vector<std::uint8_t> state = internal::to_bytes(voxels, layout);
-  const std::vector<std::uint32_t> order = internal::sorted_by_burning_level(state, d2, layout);
-  internal::Grassfire fire(layout, std::move(state), d2, records_sheet_radii);
+  const std::uint32_t largest_thin_d2 = internal::thin_part_d2(thin_part_radius);
+  const std::vector<std::uint32_t> order = internal::sorted_by_burning_level(state, d2, layout, largest_thin_d2);
+  internal::Grassfire fire(layout, std::move(state), d2, largest_thin_d2, records_sheet_radii);
   const std::size_t removed = fire.run(order);
   internal::for_each_cell(layout, [&](std::size_t i, const Voxel_key& k) {
     if(fire.deleted(i))

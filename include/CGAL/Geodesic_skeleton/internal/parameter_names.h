@@ -21,6 +21,7 @@ CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(fill_holes)
 
 // thin (output); the pipeline gives it to prune_skeleton with the MAT radius
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(sheet_radius_map)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(thin_part_radius)
 
 // voxelize (output); to_graph, cut_spurious_cycles, move_skeleton_inside (input)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(voxelized_surface_output)

@@ -41,19 +41,36 @@ constexpr double tip_growth_when_deleting = 0.3;
 // directions: two steps smooth the rounding of the discrete radii, which one step alone
 // would take for growth or for its absence.
 constexpr std::ptrdiff_t ridge_reach_in_steps = 2;
-// The squared distance up to which a voxel may be in a thin part (in_thin_part()): a part
-// about two voxels thick, where every voxel is within sqrt(2) of the outside.
-constexpr std::uint32_t thin_part_d2 = 2;
+// How much deeper than its neighbour a stair step of a thin part may be and still burn at
+// the neighbour's level (burning_level()), in voxels: the sqrt(2) - 1 of a sheet two
+// voxels thick, or the sqrt(5) - 2 of one four voxels thick, not the full voxel between
+// the layers of a thicker part.
+constexpr double stair_step_depth = 0.5;
 
-// Whether voxel i (of squared distances `d2`, 26 neighbours at `offsets`) is in a part
-// about two voxels thick: it and its 26 neighbours are within sqrt(thin_part_d2) of the
-// outside (a thin sheet, or a tube or an edge as thin).
-inline bool in_thin_part(const std::uint32_t* d2, std::size_t i, const std::array<std::ptrdiff_t, 26>& offsets)
+// The thin parts of a thinning: the largest squared distance to the outside of a voxel in
+// a thin part (thin_part_d2()) and the 26 neighbour offsets of the grid.
+struct Thin_parts
 {
-  if(d2[i] > thin_part_d2)
+  std::uint32_t largest_d2 = 2;
+  std::array<std::ptrdiff_t, 26> offsets{};
+};
+
+// The largest squared distance of a voxel in a thin part of MAT radius up to `radius`
+// voxels (`thin()`'s thin_part_radius; sqrt(2) gives 2, a part about two voxels thick).
+inline std::uint32_t thin_part_d2(double radius)
+{
+  return std::uint32_t(std::floor(radius * radius + 1e-9));
+}
+
+// Whether voxel i (of squared distances `d2`) is in a thin part: it and its 26 neighbours
+// are within sqrt(parts.largest_d2) of the outside (a thin sheet, or a tube or an edge as
+// thin).
+inline bool in_thin_part(const std::uint32_t* d2, std::size_t i, const Thin_parts& parts)
+{
+  if(d2[i] > parts.largest_d2)
     return false;
-  for(std::ptrdiff_t o : offsets)
-    if(d2[std::size_t(std::ptrdiff_t(i) + o)] > thin_part_d2)
+  for(std::ptrdiff_t o : parts.offsets)
+    if(d2[std::size_t(std::ptrdiff_t(i) + o)] > parts.largest_d2)
       return false;
   return true;
 }
@@ -63,11 +80,28 @@ inline bool in_thin_part(const std::uint32_t* d2, std::size_t i, const std::arra
 // tilted to the grid is three voxels thick along each line where its layers shift by
 // one, and the middle voxels there are at sqrt(2) from the outside, the rest at 1: those
 // lines would burn last, as ridges, and keep chains across the sheet that have nothing
-// to do with its shape. A voxel at sqrt(2) with no deeper neighbour (a stair step, not
-// the way into a thicker part) burns with the sheet, at level 1.
-inline std::uint32_t burning_level(const std::uint32_t* d2, std::size_t i, const std::array<std::ptrdiff_t, 26>& offsets)
+// to do with its shape. A thicker thin part (a larger thin_part_radius: the same sheet on
+// a finer grid) has the same steps between its middle voxels at 2 and at sqrt(5). A voxel
+// of a thin part with no deeper neighbour (a stair step, not the way into a thicker part)
+// burns with the sheet, at the level of its deepest shallower neighbour when that is less
+// than stair_step_depth shallower.
+inline std::uint32_t burning_level(const std::uint32_t* d2, std::size_t i, const Thin_parts& parts)
 {
-  return d2[i] == thin_part_d2 && in_thin_part(d2, i, offsets) ? 1 : d2[i];
+  if(d2[i] < 2 || !in_thin_part(d2, i, parts))
+    return d2[i];
+  // sqrt(d2[i]) - sqrt(q) < stair_step_depth, without a square root per neighbour.
+  const double step_floor = std::sqrt(double(d2[i])) - stair_step_depth;
+  const double shallowest_step_d2 = step_floor * step_floor;
+  std::uint32_t step_level = 0;
+  for(std::ptrdiff_t o : parts.offsets)
+  {
+    const std::uint32_t q = d2[std::size_t(std::ptrdiff_t(i) + o)];
+    if(q > d2[i])
+      return d2[i];
+    if(q < d2[i] && double(q) > shallowest_step_d2)
+      step_level = (std::max)(step_level, q);
+  }
+  return step_level > 0 ? step_level : d2[i];
 }
 
 // The working state of the thinning over a padded box: bit 0 = in the set, bit 1 = queued,
@@ -80,9 +114,9 @@ public:
   static constexpr std::uint8_t IN = 1, QUEUED = 2, DELETED = 4, CANDIDATE = 8;
 
   Grassfire(const Grid_layout& layout, std::vector<std::uint8_t> state, const std::uint32_t* d2,
-            bool record_rounds)
+            std::uint32_t largest_thin_d2, bool record_rounds)
     : m_layout(layout), m_state(std::move(state)), m_d2(d2),
-      m_offsets(layout.neighbour_offsets()), m_test(Simple_point_test::instance()),
+      m_offsets(layout.neighbour_offsets()), m_thin_parts{largest_thin_d2, m_offsets}, m_test(Simple_point_test::instance()),
       m_round_deleted(record_rounds ? m_state.size() : 0, 0)
   {
     for(int row = 0; row < 9; ++row) // from (x - 1, y + dy, z + dz), dy = row % 3 - 1, dz = row / 3 - 1
@@ -117,9 +151,9 @@ public:
     std::size_t round_size = 0;
     while(next < order.size())
     {
-      const std::uint32_t level = burning_level(m_d2, order[next], m_offsets);
+      const std::uint32_t level = burning_level(m_d2, order[next], m_thin_parts);
       round_size = 0;
-      while(next < order.size() && burning_level(m_d2, order[next], m_offsets) == level)
+      while(next < order.size() && burning_level(m_d2, order[next], m_thin_parts) == level)
         round[round_size++] = order[next++];
       m_round = 0;
       while(round_size > 0)
@@ -223,7 +257,7 @@ public:
     return removed;
   }
 
-  bool in_thin_part(std::size_t i) const { return internal::in_thin_part(m_d2, i, m_offsets); }
+  bool in_thin_part(std::size_t i) const { return internal::in_thin_part(m_d2, i, m_thin_parts); }
 
   // Queues voxel i of the set to burn in the next round, unless it is queued already.
   void queue(std::uint32_t i, std::vector<std::uint32_t>& round, std::size_t& round_size)
@@ -268,11 +302,11 @@ public:
   {
     CGAL_precondition(!m_round_deleted.empty());
     std::uint16_t latest = 0;
-    const std::uint32_t level_of_i = burning_level(m_d2, i, m_offsets);
+    const std::uint32_t level_of_i = burning_level(m_d2, i, m_thin_parts);
     for(int b = 0; b < 26; ++b)
     {
       const std::size_t j = std::size_t(std::ptrdiff_t(i) + m_offsets[b]);
-      if((m_state[j] & DELETED) && burning_level(m_d2, j, m_offsets) == level_of_i)
+      if((m_state[j] & DELETED) && burning_level(m_d2, j, m_thin_parts) == level_of_i)
         latest = (std::max)(latest, m_round_deleted[j]);
     }
     return double(latest);
@@ -349,6 +383,7 @@ private:
   std::vector<std::uint8_t> m_state;
   const std::uint32_t* m_d2;
   std::array<std::ptrdiff_t, 26> m_offsets;
+  Thin_parts m_thin_parts;
   std::array<std::ptrdiff_t, 9> m_row_offsets{};
   std::array<double, 26> m_offset_length{};
   const Simple_point_test& m_test;
@@ -359,15 +394,17 @@ private:
 };
 
 // The indices of the voxels of `state` (bit 0) sorted by increasing burning level
-// (burning_level(), over `layout`), then index: a counting sort when the range of levels
+// (burning_level(), over `layout`, with thin parts up to squared distance
+// `largest_thin_d2`), then index: a counting sort when the range of levels
 // is small, else a comparison sort.
 inline std::vector<std::uint32_t> sorted_by_burning_level(const std::vector<std::uint8_t>& state,
-                                                          const std::uint32_t* d2, const Grid_layout& layout)
+                                                          const std::uint32_t* d2, const Grid_layout& layout,
+                                                          std::uint32_t largest_thin_d2)
 {
   // The levels are computed again in each pass rather than stored: 4 bytes per voxel of
   // the set less at the thinning's peak.
-  const std::array<std::ptrdiff_t, 26> offsets = layout.neighbour_offsets();
-  const auto level_of = [&](std::uint32_t i) { return burning_level(d2, i, offsets); };
+  const Thin_parts parts{largest_thin_d2, layout.neighbour_offsets()};
+  const auto level_of = [&](std::uint32_t i) { return burning_level(d2, i, parts); };
   std::vector<std::uint32_t> order;
   std::uint32_t max_level = 0;
   for(std::size_t i = 0; i < state.size(); ++i)
