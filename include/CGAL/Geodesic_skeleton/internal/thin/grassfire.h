@@ -87,21 +87,23 @@ inline bool in_thin_part(const std::uint32_t* d2, std::size_t i, const Thin_part
 // than stair_step_depth shallower.
 inline std::uint32_t burning_level(const std::uint32_t* d2, std::size_t i, const Thin_parts& parts)
 {
-  if(d2[i] < 2 || !in_thin_part(d2, i, parts))
-    return d2[i];
-  // sqrt(d2[i]) - sqrt(q) < stair_step_depth, without a square root per neighbour.
-  const double step_floor = std::sqrt(double(d2[i])) - stair_step_depth;
+  const std::uint32_t level = d2[i];
+  if(level < 2 || level > parts.largest_d2)
+    return level;
+  // No neighbour deeper than i (so i is in a thin part too), and sqrt(level) - sqrt(q) <
+  // stair_step_depth without a square root per neighbour.
+  const double step_floor = std::sqrt(double(level)) - stair_step_depth;
   const double shallowest_step_d2 = step_floor * step_floor;
   std::uint32_t step_level = 0;
   for(std::ptrdiff_t o : parts.offsets)
   {
     const std::uint32_t q = d2[std::size_t(std::ptrdiff_t(i) + o)];
-    if(q > d2[i])
-      return d2[i];
-    if(q < d2[i] && double(q) > shallowest_step_d2)
+    if(q > level)
+      return level;
+    if(q < level && double(q) > shallowest_step_d2)
       step_level = (std::max)(step_level, q);
   }
-  return step_level > 0 ? step_level : d2[i];
+  return step_level > 0 ? step_level : level;
 }
 
 // The working state of the thinning over a padded box: bit 0 = in the set, bit 1 = queued,
