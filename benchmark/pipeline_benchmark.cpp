@@ -113,7 +113,9 @@ Pruning_counts pruning_counts(const Mesh& mesh, int resolution)
   const gs::Voxel_distance_field distances = gs::distance_transform(solid);
   gs::Sheet_radii sheet_radii;
   gs::thin(solid, distances,
-           gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(sheet_radii)));
+           gs::parameters::combine(
+               gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(sheet_radii)),
+               gs::parameters::thin_part_radius(gs::default_thin_part_radius(resolution))));
   gs::Sparse_voxel_set skeleton;
   skeleton.reset(solid.frame(), solid.bounding_box());
   solid.for_each([&](const gs::Voxel_key& k) { skeleton.insert(k); });

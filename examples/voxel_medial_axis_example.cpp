@@ -67,9 +67,12 @@ int main(int argc, char* argv[])
 
     // 3. The grassfire: a one-voxel-thick curve skeleton with the solid's topology, and
     //    the sheet radius of its voxels (the half width of a thin sheet, measured in it).
+    //    The parts thin at the default resolution are thin at this one too.
     GS::Sheet_radii sheet_radii;
     GS::thin(solid, distances,
-             GS::parameters::sheet_radius_map(boost::associative_property_map<GS::Sheet_radii>(sheet_radii)));
+             GS::parameters::combine(
+                 GS::parameters::sheet_radius_map(boost::associative_property_map<GS::Sheet_radii>(sheet_radii)),
+                 GS::parameters::thin_part_radius(GS::default_thin_part_radius(resolution))));
     GS::Sparse_voxel_set skeleton;
     skeleton.reset(solid.frame(), solid.bounding_box());
     solid.for_each([&](const GS::Voxel_key& k) { skeleton.insert(k); });
