@@ -373,9 +373,10 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(thin_measures_the_half_width_of_a_thin_sheet, Voxe
 // A sheet 3.5 to 4.4 voxels thick and slanted in the grid (a wing at resolution 128 that
 // is about two voxels thick at 64) has middle voxels at 2 and at sqrt(5) from the outside,
 // side by side along its stair steps: with the default thin-part radius, both sheets below
-// thin to a comb of three to five chains, with sheet radii of at most 5. With a thin-part radius of 2 sqrt(2) (the default of
-// extract_control_skeleton() at 128) they burn at one level, from the sheet's rim: one
-// chain runs along the sheet's middle and its sheet radius is the sheet's half width.
+// thin to a comb of three to five chains, with sheet radii of at most 5. With a thin-part
+// radius of 2 sqrt(2) (the default of extract_control_skeleton() at 128) they burn at one
+// level, from the sheet's rim: one chain runs along the sheet's middle and its sheet
+// radius is the sheet's half width.
 BOOST_AUTO_TEST_CASE_TEMPLATE(a_thicker_thin_sheet_burns_from_its_rim, VoxelSet, Voxel_set_models)
 {
   const double half_width = 15;

@@ -55,10 +55,9 @@ inline double default_thin_part_radius(int resolution)
 /// voxel. In a thin part (a wing, a fin, a thin tube: about two voxels thick, or up to
 /// `thin_part_radius`) the distance is flat, and the voxels there burn by face direction
 /// from the part's rim, so that a thin sheet keeps its middle curve, not one along its rim
-/// or its stair steps in the grid. The
-/// method (the protection of curve ends, the rounds of a level, thin parts, the
-/// guarantees, the simple-point test) is described in the manual, section
-/// \ref manual_thin.
+/// or its stair steps in the grid. The method (the protection of curve ends, the rounds of
+/// a level, thin parts, the guarantees, the simple-point test) is described in the manual,
+/// section \ref manual_thin.
 ///
 /// \tparam VoxelSet a model of `VoxelSet`. Whatever the model, the set is copied into a
 ///         dense array of bytes over its bounding box grown by two voxels, thinned there,

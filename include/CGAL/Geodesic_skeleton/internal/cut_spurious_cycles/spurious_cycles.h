@@ -376,7 +376,8 @@ std::size_t cut_spurious_cycles_impl(VoxelSet& skeleton, const FaceGraph& mesh, 
     if(left >= cycles)
       break;
     cycles = left;
-    indexed = indexed_skeleton_adjacency(skeleton, layout);
+    if(cycles > handles) // another pass, over the graph of the voxels left
+      indexed = indexed_skeleton_adjacency(skeleton, layout);
   }
   return initial_cycles - cycles;
 }

@@ -47,14 +47,6 @@ constexpr std::ptrdiff_t ridge_reach_in_steps = 2;
 // the layers of a thicker part.
 constexpr double stair_step_depth = 0.5;
 
-// The thin parts of a thinning: the largest squared distance to the outside of a voxel in
-// a thin part (thin_part_d2()) and the 26 neighbour offsets of the grid.
-struct Thin_parts
-{
-  std::uint32_t largest_d2 = 2;
-  std::array<std::ptrdiff_t, 26> offsets{};
-};
-
 // The largest squared distance of a voxel in a thin part of MAT radius up to `radius`
 // voxels (`thin()`'s thin_part_radius; sqrt(2) gives 2, a part about two voxels thick).
 inline std::uint32_t thin_part_d2(double radius)
@@ -62,15 +54,16 @@ inline std::uint32_t thin_part_d2(double radius)
   return std::uint32_t(std::floor(radius * radius + 1e-9));
 }
 
-// Whether voxel i (of squared distances `d2`) is in a thin part: it and its 26 neighbours
-// are within sqrt(parts.largest_d2) of the outside (a thin sheet, or a tube or an edge as
-// thin).
-inline bool in_thin_part(const std::uint32_t* d2, std::size_t i, const Thin_parts& parts)
+// Whether voxel i (of squared distances `d2`, 26 neighbours at `offsets`) is in a thin
+// part: it and its 26 neighbours are within sqrt(largest_thin_d2) of the outside (a thin
+// sheet, or a tube or an edge as thin; largest_thin_d2 from thin_part_d2()).
+inline bool in_thin_part(const std::uint32_t* d2, std::size_t i, const std::array<std::ptrdiff_t, 26>& offsets,
+                         std::uint32_t largest_thin_d2)
 {
-  if(d2[i] > parts.largest_d2)
+  if(d2[i] > largest_thin_d2)
     return false;
-  for(std::ptrdiff_t o : parts.offsets)
-    if(d2[std::size_t(std::ptrdiff_t(i) + o)] > parts.largest_d2)
+  for(std::ptrdiff_t o : offsets)
+    if(d2[std::size_t(std::ptrdiff_t(i) + o)] > largest_thin_d2)
       return false;
   return true;
 }
@@ -85,17 +78,18 @@ inline bool in_thin_part(const std::uint32_t* d2, std::size_t i, const Thin_part
 // of a thin part with no deeper neighbour (a stair step, not the way into a thicker part)
 // burns with the sheet, at the level of its deepest shallower neighbour when that is less
 // than stair_step_depth shallower.
-inline std::uint32_t burning_level(const std::uint32_t* d2, std::size_t i, const Thin_parts& parts)
+inline std::uint32_t burning_level(const std::uint32_t* d2, std::size_t i,
+                                   const std::array<std::ptrdiff_t, 26>& offsets, std::uint32_t largest_thin_d2)
 {
   const std::uint32_t level = d2[i];
-  if(level < 2 || level > parts.largest_d2)
+  if(level < 2 || level > largest_thin_d2)
     return level;
   // No neighbour deeper than i (so i is in a thin part too), and sqrt(level) - sqrt(q) <
   // stair_step_depth without a square root per neighbour.
   const double step_floor = std::sqrt(double(level)) - stair_step_depth;
   const double shallowest_step_d2 = step_floor * step_floor;
   std::uint32_t step_level = 0;
-  for(std::ptrdiff_t o : parts.offsets)
+  for(std::ptrdiff_t o : offsets)
   {
     const std::uint32_t q = d2[std::size_t(std::ptrdiff_t(i) + o)];
     if(q > level)
@@ -118,7 +112,8 @@ public:
   Grassfire(const Grid_layout& layout, std::vector<std::uint8_t> state, const std::uint32_t* d2,
             std::uint32_t largest_thin_d2, bool record_rounds)
     : m_layout(layout), m_state(std::move(state)), m_d2(d2),
-      m_offsets(layout.neighbour_offsets()), m_thin_parts{largest_thin_d2, m_offsets}, m_test(Simple_point_test::instance()),
+      m_offsets(layout.neighbour_offsets()), m_largest_thin_d2(largest_thin_d2),
+      m_test(Simple_point_test::instance()),
       m_round_deleted(record_rounds ? m_state.size() : 0, 0)
   {
     for(int row = 0; row < 9; ++row) // from (x - 1, y + dy, z + dz), dy = row % 3 - 1, dz = row / 3 - 1
@@ -153,9 +148,9 @@ public:
     std::size_t round_size = 0;
     while(next < order.size())
     {
-      const std::uint32_t level = burning_level(m_d2, order[next], m_thin_parts);
+      const std::uint32_t level = burning_level(order[next]);
       round_size = 0;
-      while(next < order.size() && burning_level(m_d2, order[next], m_thin_parts) == level)
+      while(next < order.size() && burning_level(order[next]) == level)
         round[round_size++] = order[next++];
       m_round = 0;
       while(round_size > 0)
@@ -259,7 +254,11 @@ public:
     return removed;
   }
 
-  bool in_thin_part(std::size_t i) const { return internal::in_thin_part(m_d2, i, m_thin_parts); }
+  bool in_thin_part(std::size_t i) const { return internal::in_thin_part(m_d2, i, m_offsets, m_largest_thin_d2); }
+  std::uint32_t burning_level(std::size_t i) const
+  {
+    return internal::burning_level(m_d2, i, m_offsets, m_largest_thin_d2);
+  }
 
   // Queues voxel i of the set to burn in the next round, unless it is queued already.
   void queue(std::uint32_t i, std::vector<std::uint32_t>& round, std::size_t& round_size)
@@ -304,11 +303,11 @@ public:
   {
     CGAL_precondition(!m_round_deleted.empty());
     std::uint16_t latest = 0;
-    const std::uint32_t level_of_i = burning_level(m_d2, i, m_thin_parts);
+    const std::uint32_t level_of_i = burning_level(i);
     for(int b = 0; b < 26; ++b)
     {
       const std::size_t j = std::size_t(std::ptrdiff_t(i) + m_offsets[b]);
-      if((m_state[j] & DELETED) && burning_level(m_d2, j, m_thin_parts) == level_of_i)
+      if((m_state[j] & DELETED) && burning_level(j) == level_of_i)
         latest = (std::max)(latest, m_round_deleted[j]);
     }
     return double(latest);
@@ -385,7 +384,7 @@ private:
   std::vector<std::uint8_t> m_state;
   const std::uint32_t* m_d2;
   std::array<std::ptrdiff_t, 26> m_offsets;
-  Thin_parts m_thin_parts;
+  std::uint32_t m_largest_thin_d2; // of a voxel in a thin part (thin_part_d2())
   std::array<std::ptrdiff_t, 9> m_row_offsets{};
   std::array<double, 26> m_offset_length{};
   const Simple_point_test& m_test;
@@ -405,8 +404,8 @@ inline std::vector<std::uint32_t> sorted_by_burning_level(const std::vector<std:
 {
   // The levels are computed again in each pass rather than stored: 4 bytes per voxel of
   // the set less at the thinning's peak.
-  const Thin_parts parts{largest_thin_d2, layout.neighbour_offsets()};
-  const auto level_of = [&](std::uint32_t i) { return burning_level(d2, i, parts); };
+  const std::array<std::ptrdiff_t, 26> offsets = layout.neighbour_offsets();
+  const auto level_of = [&](std::uint32_t i) { return burning_level(d2, i, offsets, largest_thin_d2); };
   std::vector<std::uint32_t> order;
   std::uint32_t max_level = 0;
   for(std::size_t i = 0; i < state.size(); ++i)
