@@ -27,8 +27,16 @@
 // skeleton, moved back, from the original's nearest joint or the reverse (the symmetric
 // Hausdorff distance, worst over the N copies), in % of the diagonal.
 //
+// With --radii-on-mesh (not with --rigid-motions), each curve skeleton is split again with the radii of its points
+// measured on the mesh (the distance to the surface) instead of the voxels' MAT radii, with
+// the same smallest radius and without the sheet widths, and the rows and the stability
+// table count those joints; each row ends with the median, over the curve points, of the
+// voxel radius over the radius measured on the mesh. The synthetic shape thin_capsule (a
+// capsule of radius 0.02, 1 long, tilted to the axes; not in the default list) shows how a
+// thin part's radius is measured at each resolution.
+//
 //   quality_benchmark [DATA_DIR] [--meshes a,b,c] [--resolutions 48,64,96,128]
-//                     [--rigid-motions N] [--write-shapes DIR]
+//                     [--rigid-motions N] [--radii-on-mesh] [--write-shapes DIR]
 //
 // --write-shapes DIR writes the synthetic shapes to DIR/plate.off, DIR/winged_body.off,
 // DIR/t_pose_figure.off and DIR/six_armed_star.off (to look at them with skeletonize) and
@@ -89,11 +97,13 @@ struct Options
                                     "six_armed_star"};
   std::vector<int> resolutions = {48, 64, 96, 128};
   int rigid_motions = 0;
+  bool radii_on_mesh = false;
   std::string shapes_dir; // --write-shapes
 };
 
 // Reads [DATA_DIR] [--meshes a,b] [--resolutions 48,64] [--rigid-motions N]
-// [--write-shapes DIR]; prints the usage and returns false on anything else.
+// [--radii-on-mesh] [--write-shapes DIR]; prints the usage and returns false on anything
+// else.
 bool parse_options(int argc, char* argv[], Options& o)
 {
   for(int i = 1; i < argc; ++i)
@@ -113,6 +123,8 @@ bool parse_options(int argc, char* argv[], Options& o)
       if(o.rigid_motions < 0)
         return false;
     }
+    else if(arg == "--radii-on-mesh")
+      o.radii_on_mesh = true;
     else if(arg == "--write-shapes" && i + 1 < argc)
       o.shapes_dir = argv[++i];
     else if(!arg.empty() && arg[0] != '-')
@@ -121,15 +133,25 @@ bool parse_options(int argc, char* argv[], Options& o)
     {
       std::cout << "usage: " << argv[0]
                 << " [DATA_DIR] [--meshes a,b,c] [--resolutions 48,64,96,128] [--rigid-motions N]"
-                   " [--write-shapes DIR]\n";
+                   " [--radii-on-mesh] [--write-shapes DIR]\n";
       return false;
     }
+  }
+  // The rigid motions compare extract_control_skeleton()'s joints, not those split again.
+  if(o.radii_on_mesh && o.rigid_motions > 0)
+  {
+    std::cout << "--radii-on-mesh and --rigid-motions do not go together\n";
+    return false;
   }
   return !o.resolutions.empty();
 }
 
 // The synthetic shapes of characters.h, by name.
+// A thin limb alone: radius 0.02, 1.3 and 1.7 voxels at resolutions 64 and 128.
+shapes::Soup thin_capsule() { return shapes::capsule({0, 0, 0}, {1, 0.37, 0.11}, 0.02); }
+
 const std::map<std::string, shapes::Soup (*)()> synthetic_shapes = {
+    {"thin_capsule", thin_capsule},
     {"plate", shapes::plate},
     {"winged_body", shapes::winged_body},
     {"t_pose_figure", shapes::t_pose_figure},
@@ -215,30 +237,18 @@ double bounding_box_diagonal(const Mesh& mesh)
                    CGAL::square(b.zmax() - b.zmin()));
 }
 
-// The inside of a closed mesh as the voxelizer sees it (the non-zero winding rule): inside
-// any of its connected components (overlapping pieces of a character are each filled) or
-// where its winding number is 1/2 or more (a piece that overlaps itself), and the distance
-// to its surface.
-class Mesh_inside
+// The surface of a mesh, its faces triangulated as the voxelizer does (the tests below need
+// triangles), and the distance of a point to it. Not copyable: the tree points into the mesh.
+class Mesh_surface
 {
 public:
-  // The tests below need triangles: a mesh with larger faces (quads, polygons) is
-  // triangulated first, as the voxelizer does.
-  explicit Mesh_inside(const Mesh& mesh)
+  explicit Mesh_surface(const Mesh& mesh)
     : mesh_(triangulated(mesh)), tree_(faces(mesh_).first, faces(mesh_).second, mesh_)
-  {
-    CGAL::Polygon_mesh_processing::split_connected_components(mesh_, pieces_);
-    for(const Mesh& piece : pieces_)
-      sides_.push_back(std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, Kernel>>(piece));
-  }
-  bool outside(const Point& p) const
-  {
-    // Parity first: the winding number sums over every face, and few points need it.
-    return std::all_of(sides_.begin(), sides_.end(),
-                       [&](const auto& side) { return (*side)(p) == CGAL::ON_UNBOUNDED_SIDE; }) &&
-           !Geodesic_skeleton_test::is_inside_by_winding(mesh_, p);
-  }
-  double distance_to_surface(const Point& p) const { return std::sqrt(tree_.squared_distance(p)); }
+  {}
+  Mesh_surface(const Mesh_surface&) = delete;
+  Mesh_surface& operator=(const Mesh_surface&) = delete;
+  const Mesh& triangles() const { return mesh_; }
+  double distance(const Point& p) const { return std::sqrt(tree_.squared_distance(p)); }
 
 private:
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
@@ -250,10 +260,53 @@ private:
   }
 
   Mesh mesh_;
-  std::vector<Mesh> pieces_;
-  std::vector<std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, Kernel>>> sides_;
   Tree tree_;
 };
+
+// The inside of a closed mesh as the voxelizer sees it (the non-zero winding rule): inside
+// any of its connected components (overlapping pieces of a character are each filled) or
+// where its winding number is 1/2 or more (a piece that overlaps itself), and the distance
+// to its surface.
+class Mesh_inside
+{
+public:
+  explicit Mesh_inside(const Mesh_surface& surface) : surface_(surface)
+  {
+    CGAL::Polygon_mesh_processing::split_connected_components(surface.triangles(), pieces_);
+    for(const Mesh& piece : pieces_)
+      sides_.push_back(std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, Kernel>>(piece));
+  }
+  bool outside(const Point& p) const
+  {
+    // Parity first: the winding number sums over every face, and few points need it.
+    return std::all_of(sides_.begin(), sides_.end(),
+                       [&](const auto& side) { return (*side)(p) == CGAL::ON_UNBOUNDED_SIDE; }) &&
+           !Geodesic_skeleton_test::is_inside_by_winding(surface_.triangles(), p);
+  }
+  double distance_to_surface(const Point& p) const { return surface_.distance(p); }
+
+private:
+  const Mesh_surface& surface_;
+  std::vector<Mesh> pieces_;
+  std::vector<std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, Kernel>>> sides_;
+};
+
+// Splits `curve` into `control` again with the radius of each curve point measured on the
+// mesh (`--radii-on-mesh`), with the same smallest radius, without the sheet widths; returns
+// the median over the curve points of the voxel radius over the radius measured on the mesh.
+double split_with_radii_on_mesh(Curve curve, const Mesh_surface& surface, double smallest_radius, Control& control)
+{
+  std::vector<double> ratios;
+  for(auto v : CGAL::make_range(vertices(curve)))
+  {
+    const double on_mesh = surface.distance(curve[v].point);
+    if(on_mesh > 0)
+      ratios.push_back(curve[v].radius / on_mesh);
+    curve[v].radius = on_mesh;
+  }
+  gs::split_into_bones(curve, control, params::smallest_radius(smallest_radius));
+  return ratios.empty() ? 0.0 : median(ratios);
+}
 
 struct Points_outside
 {
@@ -290,16 +343,21 @@ std::vector<Point> joint_points(const Control& control)
   return points;
 }
 
-// One row of the quality table for `mesh` at `resolution`.
-Quality_run print_quality_row(const std::string& name, const Mesh& mesh, const Mesh_inside* inside, int resolution)
+// One row of the quality table for `mesh` at `resolution`; with `radii_on_mesh`, of the
+// control skeleton split with the radii measured on the mesh (split_with_radii_on_mesh()).
+Quality_run print_quality_row(const std::string& name, const Mesh& mesh, const Mesh_inside* inside, int resolution,
+                              const Mesh_surface* radii_on_mesh)
 {
   std::cout << "| " << name << " | " << resolution << " | ";
   Control control;
   Curve curve;
+  double radius_ratio = 0;
   try
   {
-    gs::extract_control_skeleton(mesh, control,
-                                 params::combine(params::resolution(resolution), params::curve_skeleton_output(&curve)));
+    const gs::Control_skeleton_report report = gs::extract_control_skeleton(
+        mesh, control, params::combine(params::resolution(resolution), params::curve_skeleton_output(&curve)));
+    if(radii_on_mesh != nullptr)
+      radius_ratio = split_with_radii_on_mesh(curve, *radii_on_mesh, report.smallest_radius, control);
   }
   catch(const std::exception& e)
   {
@@ -316,7 +374,10 @@ Quality_run print_quality_row(const std::string& name, const Mesh& mesh, const M
     const Points_outside out = curve_points_outside(*inside, curve);
     std::cout << out.count << " | " << 100 * out.max_distance / bounding_box_diagonal(mesh) << " | ";
   }
-  std::cout << control[boost::graph_bundle].roots.size() << " |\n";
+  std::cout << control[boost::graph_bundle].roots.size() << " |";
+  if(radii_on_mesh != nullptr)
+    std::cout << " " << radius_ratio << " |";
+  std::cout << "\n";
   return {joint_points(control), c.end_points};
 }
 
@@ -429,8 +490,10 @@ int main(int argc, char* argv[])
 
   std::cout << std::fixed << std::setprecision(2);
   std::cout << "| mesh | resolution | end points | junctions | joints | bones | joints per chain | curve points"
-               " | points outside | max outside (% of diagonal) | trees |\n"
-               "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+               " | points outside | max outside (% of diagonal) | trees |"
+            << (options.radii_on_mesh ? " voxel radius / radius on the mesh |" : "")
+            << "\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|" << (options.radii_on_mesh ? "---:|" : "")
+            << "\n";
   std::vector<std::pair<std::string, std::vector<std::size_t>>> joints;
   std::ostringstream rigid_motion_rows; // printed after the stability table
   rigid_motion_rows << std::fixed << std::setprecision(2);
@@ -442,13 +505,17 @@ int main(int argc, char* argv[])
       std::cerr << "note: no mesh " << options.data_dir << "/" << name << ".off, skipped\n";
       continue;
     }
+    std::optional<Mesh_surface> surface;
+    if(CGAL::is_closed(*mesh) || options.radii_on_mesh)
+      surface.emplace(*mesh);
     std::optional<Mesh_inside> inside;
     if(CGAL::is_closed(*mesh))
-      inside.emplace(*mesh);
+      inside.emplace(*surface);
     joints.emplace_back(name, std::vector<std::size_t>());
     for(int resolution : options.resolutions)
     {
-      const Quality_run run = print_quality_row(name, *mesh, inside ? &*inside : nullptr, resolution);
+      const Quality_run run = print_quality_row(name, *mesh, inside ? &*inside : nullptr, resolution,
+                                                options.radii_on_mesh ? &*surface : nullptr);
       joints.back().second.push_back(run.joints.size());
       if(options.rigid_motions > 0)
         print_rigid_motion_row(rigid_motion_rows, name, *mesh, resolution, run, options.rigid_motions);
