@@ -97,6 +97,21 @@ if(NOT given_thin_part_radius EQUAL 2.5)
   message(FATAL_ERROR "--thin-part-radius 2.5: the JSON says ${given_thin_part_radius}")
 endif()
 
+# The split's floor on bone lengths, in largest MAT radii of the piece: by default the
+# library's 0.5, reported; 0 turns it off, which never gives fewer bones.
+string(JSON default_piece_floor GET "${stdout}" parameters minimum_bone_length_of_piece_factor)
+string(JSON floored_bones LENGTH "${stdout}" control bones)
+if(NOT default_piece_floor EQUAL 0.5)
+  message(FATAL_ERROR "the default minimum_bone_length_of_piece_factor is ${default_piece_floor}, not 0.5")
+endif()
+run(${MESH} --resolution 32 --thin-part-radius 2.5 --min-bone-length-of-piece 0)
+string(JSON given_piece_floor GET "${stdout}" parameters minimum_bone_length_of_piece_factor)
+string(JSON unfloored_bones LENGTH "${stdout}" control bones)
+if(NOT given_piece_floor EQUAL 0 OR unfloored_bones LESS floored_bones)
+  message(FATAL_ERROR "--min-bone-length-of-piece 0: the JSON says ${given_piece_floor}, "
+                      "${unfloored_bones} bones against ${floored_bones} with the floor")
+endif()
+
 # The other formats: the OBJ and the polylines hold every bone, cut or not.
 string(JSON cut_bones LENGTH "${json}" control cut_bones)
 math(EXPR all_bones "${bones} + ${cut_bones}")

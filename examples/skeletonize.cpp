@@ -80,6 +80,7 @@ struct Options
   double straightness_tolerance = ranges::straightness_tolerance.default_value;
   double minimum_bone_length_factor = ranges::minimum_bone_length_factor.default_value;
   double maximum_bone_length_factor = ranges::maximum_bone_length_factor.default_value;
+  double minimum_bone_length_of_piece_factor = ranges::minimum_bone_length_of_piece_factor.default_value;
   std::optional<double> smallest_radius; // world units; none: extract_control_skeleton()'s default
   std::size_t reeb_intervals = static_cast<std::size_t>(ranges::number_of_reeb_intervals.default_value);
   bool fill_holes = true;
@@ -118,6 +119,8 @@ const Numeric_option numeric_options[] = {
     {"--min-bone-length", "F", ranges::minimum_bone_length_factor, "shortest bone in MAT radii"},
     {"--max-bone-length", "F", ranges::maximum_bone_length_factor,
      "longest straight bone in MAT radii, cut at its narrowings (0: no limit)"},
+    {"--min-bone-length-of-piece", "F", ranges::minimum_bone_length_of_piece_factor,
+     "level of detail: shortest bone in largest MAT radii of its piece"},
     {"--smallest-radius", "R", ranges::smallest_radius,
      "the split counts radii under R (world units) as R: thin parts get few joints",
      "the longest principal extent / 128"},
@@ -251,6 +254,8 @@ Options parse_options(int argc, char** argv)
     else if(a == "--straightness") o.straightness_tolerance = parse_number<double>(a, value());
     else if(a == "--min-bone-length") o.minimum_bone_length_factor = parse_number<double>(a, value());
     else if(a == "--max-bone-length") o.maximum_bone_length_factor = parse_number<double>(a, value());
+    else if(a == "--min-bone-length-of-piece")
+      o.minimum_bone_length_of_piece_factor = parse_number<double>(a, value());
     else if(a == "--smallest-radius") o.smallest_radius = parse_number<double>(a, value());
     else if(a == "--reeb-intervals") o.reeb_intervals = parse_number<std::size_t>(a, value());
     else if(a == "--skeleton") o.skeleton = value();
@@ -519,6 +524,7 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
         params::bend_threshold(o.bend_threshold), params::straightness_tolerance(o.straightness_tolerance),
         params::minimum_bone_length_factor(o.minimum_bone_length_factor),
         params::maximum_bone_length_factor(o.maximum_bone_length_factor),
+        params::minimum_bone_length_of_piece_factor(o.minimum_bone_length_of_piece_factor),
         params::number_of_reeb_intervals(o.reeb_intervals), params::curve_skeleton_output(&curve),
         params::thinned_skeleton_output(thinned_graph ? &thinned : nullptr),
         params::reeb_graph_output(o.reeb_graph ? &reeb : nullptr));
@@ -591,6 +597,7 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
                         {"straightness_tolerance", o.straightness_tolerance},
                         {"minimum_bone_length_factor", o.minimum_bone_length_factor},
                         {"maximum_bone_length_factor", o.maximum_bone_length_factor},
+                        {"minimum_bone_length_of_piece_factor", o.minimum_bone_length_of_piece_factor},
                         {"smallest_radius", report.smallest_radius},
                         {"reeb_intervals", o.reeb_intervals}, {"voxel_size", report.voxel_size}}},
         {"computed", computed},

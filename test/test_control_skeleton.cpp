@@ -97,8 +97,10 @@ Control bones_of(const Skeleton& s, const NamedParameters& np = CGAL::parameters
   return control;
 }
 
-// The paper's split alone, without the package's cut of long straight bones.
-const auto paper_split = gs::parameters::maximum_bone_length_factor(0.0);
+// The paper's split alone, without the package's cut of long straight bones and without
+// its floor on bone lengths in the piece's largest radius.
+const auto paper_split = gs::parameters::combine(gs::parameters::maximum_bone_length_factor(0.0),
+                                                 gs::parameters::minimum_bone_length_of_piece_factor(0.0));
 
 std::vector<double> accumulation(const std::vector<Point>& points, double L, bool closed = false)
 {
@@ -520,6 +522,40 @@ BOOST_AUTO_TEST_CASE(the_smallest_radius_is_the_unit_of_thin_parts)
              num_edges(fine));
 }
 
+// A limb of radius 1, 10 long and straight, turns at a right angle into a wavy tip of
+// radius 0.1, 4 long (a hoof or a finger as a fine grid resolves it). Measured in its own
+// radius the tip gets a joint at every wave; with the floor of half the piece's largest
+// radius, no bone is shorter than 0.5, and the tip gets fewer joints.
+BOOST_AUTO_TEST_CASE(no_bone_is_shorter_than_the_level_of_detail_of_its_piece)
+{
+  std::vector<Point> limb = polyline({Point(0, 0, 0), Point(10, 0, 0)}, 0.05);
+  limb.pop_back();
+  const std::size_t thick = limb.size();
+  for(int i = 0; i <= 80; ++i)
+    limb.emplace_back(10 + 0.15 * std::sin(0.05 * i * pi / 0.4), 0.05 * i, 0);
+  Skeleton s = chain_skeleton(limb, 1.0);
+  for(std::size_t v = thick; v < num_vertices(s); ++v)
+    s[v].radius = 0.1;
+  auto shortest_bone = [](const Control& c) {
+    double shortest = HUGE_VAL;
+    for(const auto bone : boost::make_iterator_range(edges(c)))
+      shortest = (std::min)(shortest, c[bone].length); // along the skeleton
+    return shortest;
+  };
+  const Control paper = bones_of(s, paper_split);
+  const Control floored =
+      bones_of(s, gs::parameters::combine(gs::parameters::maximum_bone_length_factor(0.0),
+                                          gs::parameters::minimum_bone_length_of_piece_factor(0.5)));
+  check_tree(floored);
+  BOOST_TEST(num_edges(paper) >= 6u);
+  BOOST_TEST(shortest_bone(paper) < 0.5);
+  BOOST_TEST(num_edges(floored) >= 2u); // the tip still bends away from the limb
+  BOOST_TEST(num_edges(floored) < num_edges(paper));
+  BOOST_TEST(shortest_bone(floored) >= 0.5 * (1 - 1e-12));
+  // The default of split_into_bones() is this floor.
+  BOOST_TEST(num_edges(bones_of(s, gs::parameters::maximum_bone_length_factor(0.0))) == num_edges(floored));
+}
+
 // The same wavy chain as a wing's chain: its MAT radius is the wing's half thickness, 0.1,
 // and its sheet half width is 1. Measured in the width, its waves are under the
 // straightness tolerance; the joints keep their MAT radius; a width under the radius
@@ -567,6 +603,10 @@ BOOST_AUTO_TEST_CASE(bad_parameters_throw)
   BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::maximum_bone_length_factor(-1.0)), std::invalid_argument);
   BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::smallest_radius(-1.0)), std::invalid_argument);
   BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::smallest_radius(std::nan(""))), std::invalid_argument);
+  BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::minimum_bone_length_of_piece_factor(-1.0)),
+                    std::invalid_argument);
+  BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::minimum_bone_length_of_piece_factor(std::nan(""))),
+                    std::invalid_argument);
   BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::chord_length_factors(std::vector<double>{})),
                     std::invalid_argument);
   BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::minimum_bone_length_factor(-1.0)), std::invalid_argument);

@@ -255,7 +255,7 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 ///                       default resolution, in proportion to the resolution elsewhere (7 at
 ///                       96, 9 at 128), so that the window spans the same length of the shape}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{bend_threshold, straightness_tolerance, minimum_bone_length_factor, maximum_bone_length_factor, chord_length_factors}
+///   \cgalParamNBegin{bend_threshold, straightness_tolerance, minimum_bone_length_factor, maximum_bone_length_factor, minimum_bone_length_of_piece_factor, chord_length_factors}
 ///     \cgalParamDescription{the settings of `split_into_bones()`}
 ///     \cgalParamType{as for `split_into_bones()`}
 ///     \cgalParamDefault{as for `split_into_bones()`}

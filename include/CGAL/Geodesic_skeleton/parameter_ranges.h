@@ -89,6 +89,10 @@ inline constexpr Parameter_range minimum_bone_length_factor{"minimum_bone_length
 /// of its piece is cut into equal bones at its narrowings (0: no limit).
 inline constexpr Parameter_range maximum_bone_length_factor{"maximum_bone_length_factor", 0, 1000, 3.0,
                                                             false, false};
+/// `split_into_bones()`: the shortest bone, in largest MAT radii of its piece: the rig's
+/// level of detail, whatever the grid resolves (0: no such floor).
+inline constexpr Parameter_range minimum_bone_length_of_piece_factor{"minimum_bone_length_of_piece_factor", 0, 1000,
+                                                                     0.5, false, false};
 /// `split_into_bones()`: each chord length, in mean MAT radii (defaults: 3 and 6).
 inline constexpr Parameter_range chord_length_factor{"chord_length_factors", 1e-3, 1000, 3.0, false, false};
 /// `chord_to_point_distance_accumulation()`: chords averaged per point.

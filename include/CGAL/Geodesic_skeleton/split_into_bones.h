@@ -52,12 +52,15 @@ Bone_splitting_settings bone_splitting_settings(const NamedParameters& np,
       choose_parameter(get_parameter(np, internal_np::chord_length_factors_tag),
                        std::vector<double>{ranges::chord_length_factor.default_value,
                                            2 * ranges::chord_length_factor.default_value}),
-      choose_parameter(get_parameter(np, internal_np::smallest_radius_tag), ranges::smallest_radius.default_value)};
+      choose_parameter(get_parameter(np, internal_np::smallest_radius_tag), ranges::smallest_radius.default_value),
+      choose_parameter(get_parameter(np, internal_np::minimum_bone_length_of_piece_factor_tag),
+                       ranges::minimum_bone_length_of_piece_factor.default_value)};
   checked_parameter(ranges::bend_threshold, s.bend_threshold, caller);
   checked_parameter(ranges::straightness_tolerance, s.straightness_tolerance, caller);
   checked_parameter(ranges::minimum_bone_length_factor, s.minimum_bone_length_factor, caller);
   checked_parameter(ranges::maximum_bone_length_factor, s.maximum_bone_length_factor, caller);
   checked_parameter(ranges::smallest_radius, s.smallest_radius, caller);
+  checked_parameter(ranges::minimum_bone_length_of_piece_factor, s.minimum_bone_length_of_piece_factor, caller);
   if(s.chord_length_factors.empty())
     throw std::invalid_argument(caller + ": chord_length_factors must not be empty");
   for(double f : s.chord_length_factors)
@@ -215,7 +218,8 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 /// it strays from its chord by more than `straightness_tolerance` MAT radii, never leaving
 /// a bone shorter than `minimum_bone_length_factor` MAT radii (each radius taken as at least
 /// `smallest_radius`, and as at least the sheet's half width where a `sheet_half_width_map`
-/// gives one); a straight bone longer than
+/// gives one), nor shorter than `minimum_bone_length_of_piece_factor` times the largest MAT
+/// radius of its connected component (the rig's level of detail); a straight bone longer than
 /// `maximum_bone_length_factor` times the largest MAT radius of its connected component
 /// (the body's thickness; a straight limb has no bend to cut at) is cut
 /// into bones of about equal length, each cut at the narrowest point near its
@@ -293,6 +297,17 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 ///                           parameter)}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{3}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{minimum_bone_length_of_piece_factor}
+///     \cgalParamDescription{the shortest bone a split may leave, in units of the largest
+///                           MAT radius of its connected component of the skeleton (R), in
+///                           [0, 1000]: the rig's level of detail. Near a tip the MAT radius is
+///                           small and a finer grid resolves bends there that a coarser one
+///                           smooths away; bones shorter than a fraction of the body's
+///                           thickness would come and go with the resolution. 0 turns this
+///                           off (package parameter)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{0.5}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{smallest_radius}
 ///     \cgalParamDescription{the smallest radius that the lengths of the split (chords,

@@ -39,6 +39,7 @@ struct Bone_splitting_settings
   double maximum_bone_length_factor; // longest straight bone, in largest MAT radii of the piece (0: no limit)
   std::vector<double> chord_length_factors; // CPDA chord lengths, in MAT radii
   double smallest_radius = 0;               // radii below it count as it in every length (world units)
+  double minimum_bone_length_of_piece_factor = 0; // shortest bone, in largest MAT radii of the piece
 };
 
 class Branch_splitter
@@ -48,7 +49,8 @@ public:
   Branch_splitter(const std::vector<Vec3>& points, const std::vector<double>& radii,
                   const Bone_splitting_settings& settings, double largest_radius)
     : m_p(points), m_r(radii), m_settings(settings), m_s(points.size(), 0.0),
-      m_longest_bone(settings.maximum_bone_length_factor * largest_radius)
+      m_longest_bone(settings.maximum_bone_length_factor * largest_radius),
+      m_shortest_of_piece(settings.minimum_bone_length_of_piece_factor * largest_radius)
   {
     for(std::size_t i = 1; i < m_p.size(); ++i)
       m_s[i] = m_s[i - 1] + norm3(sub(m_p[i], m_p[i - 1]));
@@ -86,13 +88,23 @@ private:
     return std::max(r, 1e-6 * std::max(m_s.back(), 1e-300));
   }
 
+  // The shortest bone of a part of mean radius `radius`: `minimum_bone_length_factor` radii,
+  // and no shorter than the level of detail of the piece. A thin part near a tip (a hoof, a
+  // finger tip, a tail) is measured in its own small radius, and a finer grid resolves
+  // bends there that a coarser one smooths away: bones shorter than a fraction of the
+  // piece's thickness would come and go with the resolution.
+  double shortest_bone(double radius) const
+  {
+    return (std::max)(m_settings.minimum_bone_length_factor * radius, m_shortest_of_piece);
+  }
+
   // Appends the inner cut points of [i, j] to `cuts`, in increasing order.
   void split(std::size_t i, std::size_t j, std::vector<std::size_t>& cuts)
   {
     if(j <= i + 1)
       return;
     const double radius = mean_radius(i, j);
-    const double shortest = m_settings.minimum_bone_length_factor * radius;
+    const double shortest = shortest_bone(radius);
     // Candidates: the inner points that leave both parts at least `shortest` long.
     std::vector<std::size_t> candidates;
     for(std::size_t k = i + 1; k < j; ++k)
@@ -149,13 +161,13 @@ private:
   // largest MAT radius of the piece: the body's thickness, so that a thin limb gets as
   // many bones as a thick one of the same length): cut it into n bones of about equal
   // length, n the fewest that are short enough (at most `most_bones_per_straight_part`, and
-  // no more than leave each bone `minimum_bone_length_factor` radii long), each cut at the narrowest point (the smallest
+  // no more than leave each bone as long as shortest_bone()), each cut at the narrowest point (the smallest
   // MAT radius, where an elbow, a knee or a wrist is) within a quarter of a bone's length
   // of its equal-length position, ties to the nearest that position.
   void subdivide(std::size_t i, std::size_t j, double radius, std::vector<std::size_t>& cuts) const
   {
     const double longest = m_longest_bone;
-    const double shortest = m_settings.minimum_bone_length_factor * radius;
+    const double shortest = shortest_bone(radius);
     const double length = m_s[j] - m_s[i];
     if(!(longest > 0) || length <= longest)
       return;
@@ -198,6 +210,7 @@ private:
   const Bone_splitting_settings& m_settings;
   std::vector<double> m_s;
   double m_longest_bone;
+  double m_shortest_of_piece; // no bone shorter, whatever its radius: the rig's level of detail
 };
 
 } // namespace internal
