@@ -148,7 +148,7 @@ private:
       }
       if(deviation <= m_settings.straightness_tolerance * radius)
       {
-        subdivide(i, j, radius, cuts);
+        subdivide(i, j, shortest, cuts);
         return;
       }
     }
@@ -161,13 +161,13 @@ private:
   // largest MAT radius of the piece: the body's thickness, so that a thin limb gets as
   // many bones as a thick one of the same length): cut it into n bones of about equal
   // length, n the fewest that are short enough (at most `most_bones_per_straight_part`, and
-  // no more than leave each bone as long as shortest_bone()), each cut at the narrowest point (the smallest
-  // MAT radius, where an elbow, a knee or a wrist is) within a quarter of a bone's length
-  // of its equal-length position, ties to the nearest that position.
-  void subdivide(std::size_t i, std::size_t j, double radius, std::vector<std::size_t>& cuts) const
+  // no more than leave each bone `shortest` long, the part's shortest_bone()), each cut at
+  // the narrowest point (the smallest MAT radius, where an elbow, a knee or a wrist is)
+  // within a quarter of a bone's length of its equal-length position, ties to the nearest
+  // that position.
+  void subdivide(std::size_t i, std::size_t j, double shortest, std::vector<std::size_t>& cuts) const
   {
     const double longest = m_longest_bone;
-    const double shortest = shortest_bone(radius);
     const double length = m_s[j] - m_s[i];
     if(!(longest > 0) || length <= longest)
       return;
