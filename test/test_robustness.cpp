@@ -494,6 +494,10 @@ BOOST_AUTO_TEST_CASE(out_of_range_parameters_are_refused_before_any_work)
   BOOST_TEST(refused_up_front(params::smallest_radius(nan), "smallest_radius", "[0, inf], got nan"));
   BOOST_TEST(refused_up_front(params::thin_part_radius(-1.), "thin_part_radius", "[0, 1000], got -1"));
   BOOST_TEST(refused_up_front(params::thin_part_radius(nan), "thin_part_radius", "[0, 1000], got nan"));
+  BOOST_TEST(refused_up_front(params::minimum_bone_length_of_piece_factor(-1.), "minimum_bone_length_of_piece_factor",
+                              "[0, 1000], got -1"));
+  BOOST_TEST(refused_up_front(params::minimum_bone_length_of_piece_factor(nan), "minimum_bone_length_of_piece_factor",
+                              "[0, 1000], got nan"));
   BOOST_TEST(refused_up_front(params::chord_length_factors(std::vector<double>{3., 0.}), "chord_length_factors",
                               "[0.001, 1000], got 0"));
   BOOST_TEST(refused_up_front(params::number_of_reeb_intervals(std::size_t(0)), "number_of_reeb_intervals",
