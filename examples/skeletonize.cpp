@@ -176,8 +176,12 @@ std::string usage_text()
   text << usage_head;
   for(const Numeric_option& o : numeric_options)
   {
-    text << "  " << std::left << std::setw(27) << (std::string(o.option) + " " + o.metavar) << o.help << ",\n"
-         << std::setw(29) << "" << o.range.valid_values() << " (default ";
+    // An option too long for its column gets its words on the next line.
+    const std::string name = std::string(o.option) + " " + o.metavar;
+    text << "  " << std::left << std::setw(27) << name;
+    if(name.size() >= 27)
+      text << "\n" << std::setw(29) << "";
+    text << o.help << ",\n" << std::setw(29) << "" << o.range.valid_values() << " (default ";
     if(o.default_text)
       text << o.default_text;
     else

@@ -1,5 +1,6 @@
 // Specification of CGAL/Geodesic_skeleton/cut_spurious_cycles.h.
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
+#include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
 #include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>
 #include <CGAL/Geodesic_skeleton/internal/move_skeleton_inside/closed_mesh_interior.h>
 #include <CGAL/Geodesic_skeleton/internal/voxelize/mesh_triangles.h>
@@ -71,6 +72,15 @@ Cut_result cut(const Mesh& mesh, int resolution)
   r.cycles_after = test::graph_cycles(after);
   r.components_after = test::graph_components(after);
   return r;
+}
+
+// The curve ends of a voxel skeleton: its voxels with one 26-neighbour.
+template <typename VoxelSet>
+std::size_t curve_ends(const VoxelSet& skeleton)
+{
+  std::size_t ends = 0;
+  skeleton.for_each([&](const gs::Voxel_key& k) { ends += gs::skeleton_degree(skeleton, k) == 1; });
+  return ends;
 }
 
 // A horseshoe of five overlapping boxes (two pillars, a bar on top, a foot under each
@@ -155,6 +165,31 @@ BOOST_AUTO_TEST_CASE(near_contacts_of_demo_characters_are_opened)
     // diagonal step of the surface (see above).
     BOOST_TEST(r.farthest_removed_voxel <= std::sqrt(3.0), name);
   }
+}
+
+BOOST_AUTO_TEST_CASE(touching_curves_are_pulled_apart_not_cut)
+{
+  // At resolution 64 the skeletons of the camel's two front legs touch at one voxel (the
+  // legs interpenetrate in the mesh) and so do those of its hind legs (they come within a
+  // voxel): each contact closes a cycle through the body. Removing the voxel of a contact
+  // would split the skeleton, and the cut used to remove a voxel of a leg above it: that
+  // leg's upper part ended in a stub and its lower part hung from the other leg. Moving the
+  // voxel of the contact to a free neighbour that still links its own leg opens each cycle
+  // and cuts no leg: the skeleton has no curve end that it did not have.
+  const Mesh camel = test::demo_mesh<Mesh>("camel.off");
+  test::Voxel_pipeline<Mesh, gs::Sparse_voxel_set> p(camel, 64);
+  BOOST_TEST(test::graph_cycles(p.graph) == 2);
+  const std::size_t ends_before = curve_ends(p.voxels);
+  const std::size_t voxels_before = p.voxels.size();
+  BOOST_TEST(gs::cut_spurious_cycles(p.voxels, camel) == 2u);
+  decltype(p.graph) after;
+  gs::to_graph(p.voxels, p.distances, camel, after);
+  BOOST_TEST(test::graph_cycles(after) == 0);
+  BOOST_TEST(test::graph_components(after) == 1);
+  BOOST_TEST(curve_ends(p.voxels) == ends_before);
+  BOOST_TEST(p.voxels.size() == voxels_before); // moved, none removed
+  // Every voxel is still inside the solid: a moved voxel stays in its leg.
+  p.voxels.for_each([&](const gs::Voxel_key& k) { BOOST_TEST(p.distances.inside(k)); });
 }
 
 BOOST_AUTO_TEST_CASE(the_cycles_are_counted_on_the_graph_that_is_left)

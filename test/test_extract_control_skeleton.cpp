@@ -133,11 +133,14 @@ BOOST_AUTO_TEST_CASE(demo_animals_give_one_tree_of_a_rig_s_size_inside_the_mesh)
   // solid keeps two (the third's hole is about a voxel wide): two loops, each cut once.
   // The cow's thin tail lies along its rump and is under the level of detail: 4 legs and
   // the head (its sixth end was a stub one voxel long where the tail starts, which the
-  // snipping of the graph's end branches removes).
+  // snipping of the graph's end branches removes). So is the camel's at the default
+  // resolution, against its rump: 4 legs and the head (its sixth end was a stub where the cut
+  // of a spurious cycle broke a front leg above the contact of the two front legs; the
+  // contact is now pulled apart, see touching_curves_are_pulled_apart_not_cut).
   struct Expected { const char* mesh; std::size_t min_bones, max_bones, min_ends, cut_bones; };
   for(const Expected& x : {Expected{"cow.off", 15, 40, 5, 0}, Expected{"dino.off", 15, 40, 6, 0},
                            Expected{"triceratops.off", 15, 40, 6, 0}, Expected{"bull.off", 15, 40, 6, 0},
-                           Expected{"camel.off", 15, 40, 6, 0}, Expected{"elephant.off", 15, 40, 6, 2}})
+                           Expected{"camel.off", 15, 40, 5, 0}, Expected{"elephant.off", 15, 40, 6, 2}})
   {
     BOOST_TEST_CONTEXT(x.mesh)
     {

@@ -11,6 +11,7 @@
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/Voxelized_surface.h>
 #include <CGAL/Geodesic_skeleton/internal/cut_spurious_cycles/spurious_cycles.h>
+#include <CGAL/Geodesic_skeleton/internal/cut_spurious_cycles/touching_curves.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_line_crossings.h>
 #include <CGAL/Geodesic_skeleton/internal/to_graph/skeleton_adjacency.h>
@@ -38,18 +39,21 @@ namespace Geodesic_skeleton {
 /// conservatively (`voxelize()`'s default) joins parts that come within about a voxel of
 /// each other (a hand resting on a thigh, legs that nearly touch), and `thin()`, which keeps
 /// the solid's topology, turns each such bridge into a cycle of the skeleton. Such a cycle
-/// crosses the gap between the parts, outside the mesh: removing the skeleton voxels on
-/// either side of the gap opens it. While the skeleton has more cycles than the mesh has
-/// handles, skeleton voxels with a step that leaves the mesh are removed where that opens a
+/// crosses the gap between the parts, outside the mesh. While the skeleton has more cycles
+/// than the mesh has handles: first, where the curves of two parts touch across the gap, a
+/// voxel of one curve is moved to a free neighbour inside the mesh that still links its
+/// own curve and no longer touches the other, so that neither curve is cut; then skeleton
+/// voxels with a step that leaves the mesh are removed. Either is kept where it opens a
 /// cycle without splitting a connected component, the cycles counted on the graph of the
-/// voxels left (as `to_graph()` would make it). The method, what it keeps and its limits
-/// are described in the manual, section \ref manual_cut_spurious_cycles.
+/// skeleton as changed (as `to_graph()` would make it). The method, what it keeps and its
+/// limits are described in the manual, section \ref manual_cut_spurious_cycles.
 ///
 /// \tparam VoxelSet a model of `VoxelSet`. Whatever the model, its voxels are indexed in a
 ///         dense array over its bounding box.
 /// \tparam FaceGraph a model of `FaceListGraph`, the mesh the skeleton was computed from.
 /// \param skeleton a one-voxel-thick voxel skeleton (`thin()`), in the frame of the mesh's
-///        voxelization; the removed voxels leave it.
+///        voxelization; the removed voxels leave it, and a moved voxel leaves it for a
+///        26-neighbour inside its bounding box (`bounding_box()`).
 /// \param mesh the mesh.
 /// \param np an optional sequence of \ref manual_named_parameters "named parameters"
 ///        among the ones listed below:
@@ -82,10 +86,12 @@ namespace Geodesic_skeleton {
 ///      `voxelized_surface` is in another frame.
 ///
 /// \b Complexity: O(S log S + M + F) for S skeleton voxels, M mesh vertices and edges and
-///    F faces (plus the grid cells the faces cover along each axis), and O(S) per run of
-///    voxels tried (the graph of the voxels left is built anew), per pass, a pass repeated
-///    only while it opens cycles; nothing beyond counting the cycles when there are no more
-///    than handles.
+///    F faces (plus the grid cells the faces cover along each axis), and O(S) per move or
+///    run of voxels tried (the graph of the skeleton as changed is built anew); the moves
+///    tried are at most 26 per voxel of a cycle with three neighbours or more, and only those
+///    that pass the local tests (O(1) each) are counted on the graph; the removals are tried
+///    per pass, a pass repeated only while it opens cycles; nothing beyond counting the
+///    cycles when there are no more than handles.
 template <typename VoxelSet, typename FaceGraph,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 std::size_t cut_spurious_cycles(VoxelSet& skeleton, const FaceGraph& mesh,

@@ -248,32 +248,45 @@ std::pair<std::size_t, std::size_t> components_and_cycles_left(const Skeleton_ad
   return components_and_cycles(rebuilt, std::vector<bool>(rebuilt.nodes.size(), false));
 }
 
-// What a pass of the cut tries removing, in order: single voxels of `graph` on cycles with a
-// step out of the mesh's inside (those whose every step leaves, i.e. whose centre is
-// outside, first, then by the number of steps out: a voxel of the cycle on a side of the
-// gap), then runs of such voxels (connected groups, shortest first), for where removing one
-// voxel would split the skeleton.
-template <typename MeshLines>
-std::vector<std::vector<std::size_t>> cut_trials(const Skeleton_adjacency& graph, MeshLines& mesh_lines)
+// The steps of a skeleton's graph between two voxels on cycles (its edges between nodes on
+// cycles), each with whether it leaves the mesh (Inside_steps::leave_inside()).
+struct Cycle_steps
 {
-  const std::vector<bool> on_cycle = nodes_on_cycles(graph);
   std::vector<std::pair<Voxel_key, Voxel_key>> steps;
-  std::vector<std::size_t> step_edge;
+  std::vector<std::size_t> edge; // the edge of the graph of each step
+  std::vector<bool> leaves;      // filled by the caller, one per step
+};
+
+inline Cycle_steps cycle_steps(const Skeleton_adjacency& graph, const std::vector<bool>& on_cycle)
+{
+  Cycle_steps c;
   for(std::size_t e = 0; e < graph.edges.size(); ++e)
   {
     const auto [a, b] = graph.edges[e];
     if(on_cycle[std::size_t(a)] && on_cycle[std::size_t(b)])
     {
-      steps.emplace_back(graph.nodes[std::size_t(a)], graph.nodes[std::size_t(b)]);
-      step_edge.push_back(e);
+      c.steps.emplace_back(graph.nodes[std::size_t(a)], graph.nodes[std::size_t(b)]);
+      c.edge.push_back(e);
     }
   }
-  const std::vector<bool> leaves = Inside_steps(mesh_lines()).leave_inside(steps);
-  std::vector<int> leaving_steps(graph.nodes.size(), 0), cycle_steps(graph.nodes.size(), 0);
+  return c;
+}
+
+// What a pass of the cut tries removing, in order: single voxels of `graph` on cycles with a
+// step out of the mesh's inside (`cycle`, from cycle_steps() with its `leaves` filled; those
+// whose every step leaves, i.e. whose centre is outside, first, then by the number of steps
+// out: a voxel of the cycle on a side of the gap), then runs of such voxels (connected
+// groups, shortest first), for where removing one voxel would split the skeleton.
+inline std::vector<std::vector<std::size_t>> cut_trials(const Skeleton_adjacency& graph, const Cycle_steps& cycle)
+{
+  const auto& steps = cycle.steps;
+  const auto& step_edge = cycle.edge;
+  const std::vector<bool>& leaves = cycle.leaves;
+  std::vector<int> leaving_steps(graph.nodes.size(), 0), steps_on_cycles(graph.nodes.size(), 0);
   for(std::size_t k = 0; k < steps.size(); ++k)
     for(int end : {graph.edges[step_edge[k]].first, graph.edges[step_edge[k]].second})
     {
-      ++cycle_steps[std::size_t(end)];
+      ++steps_on_cycles[std::size_t(end)];
       leaving_steps[std::size_t(end)] += leaves[k];
     }
 
@@ -282,7 +295,7 @@ std::vector<std::vector<std::size_t>> cut_trials(const Skeleton_adjacency& graph
     if(leaving_steps[v] > 0)
       singles.push_back(v);
   std::stable_sort(singles.begin(), singles.end(), [&](std::size_t a, std::size_t b) {
-    const bool a_out = leaving_steps[a] == cycle_steps[a], b_out = leaving_steps[b] == cycle_steps[b];
+    const bool a_out = leaving_steps[a] == steps_on_cycles[a], b_out = leaving_steps[b] == steps_on_cycles[b];
     return a_out != b_out ? a_out : leaving_steps[a] > leaving_steps[b];
   });
   std::vector<std::vector<std::size_t>> trials;
@@ -315,19 +328,19 @@ std::vector<std::vector<std::size_t>> cut_trials(const Skeleton_adjacency& graph
 }
 
 // One pass of the cut over `indexed`, the skeleton's graph as it is, which has `cycles`
-// cycles, more than `handles`: tries `cut_trials()` in order, keeping each removal that
-// lowers the number of cycles (counted on the graph rebuilt without the removed voxels)
-// without splitting a component, while there are more cycles than `handles`. Returns the
-// number of cycles left.
-template <typename VoxelSet, typename MeshLines>
+// cycles, more than `handles`: tries `trials` (cut_trials() of that graph) in order, keeping
+// each removal that lowers the number of cycles (counted on the graph rebuilt without the
+// removed voxels) without splitting a component, while there are more cycles than
+// `handles`. Returns the number of cycles left.
+template <typename VoxelSet>
 std::size_t cut_pass(VoxelSet& skeleton, const Indexed_skeleton_adjacency& indexed, std::size_t cycles,
-                     MeshLines& mesh_lines, std::size_t handles)
+                     const std::vector<std::vector<std::size_t>>& trials, std::size_t handles)
 {
   const Skeleton_adjacency& graph = indexed.graph;
   std::vector<bool> removed(graph.nodes.size(), false);
   const std::size_t components = components_and_cycles(graph, removed).first;
   const auto node_of = [&](const Voxel_key& k) { return indexed.node_of(k); };
-  for(const auto& trial : cut_trials(graph, mesh_lines))
+  for(const auto& trial : trials)
   {
     if(cycles <= handles)
       break;
@@ -351,35 +364,6 @@ std::size_t cut_pass(VoxelSet& skeleton, const Indexed_skeleton_adjacency& index
     if(removed[v])
       skeleton.erase(graph.nodes[v]);
   return cycles;
-}
-
-// cut_spurious_cycles() with its inside tests against `mesh_lines` (a callable returning
-// the mesh's Grid_line_crossings in the frame of the skeleton, called only when there are
-// more cycles than handles). Passes are repeated while they open cycles: a removal can
-// free edges whose steps the next pass tests.
-template <typename VoxelSet, typename FaceGraph, typename MeshLines>
-std::size_t cut_spurious_cycles_impl(VoxelSet& skeleton, const FaceGraph& mesh, MeshLines& mesh_lines)
-{
-  if(skeleton.size() == 0 || num_faces(mesh) == 0)
-    return 0;
-  const Grid_layout layout(require_nonempty_box(skeleton, 0, "cut_spurious_cycles"));
-  Indexed_skeleton_adjacency indexed = indexed_skeleton_adjacency(skeleton, layout);
-  const std::size_t initial_cycles =
-      components_and_cycles(indexed.graph, std::vector<bool>(indexed.graph.nodes.size(), false)).second;
-  if(initial_cycles == 0)
-    return 0;
-  const std::size_t handles = capped_genus_sum(mesh);
-  std::size_t cycles = initial_cycles;
-  while(cycles > handles)
-  {
-    const std::size_t left = cut_pass(skeleton, indexed, cycles, mesh_lines, handles);
-    if(left >= cycles)
-      break;
-    cycles = left;
-    if(cycles > handles) // another pass, over the graph of the voxels left
-      indexed = indexed_skeleton_adjacency(skeleton, layout);
-  }
-  return initial_cycles - cycles;
 }
 
 } // namespace internal
