@@ -4,9 +4,9 @@
 #ifndef CGAL_GEODESIC_SKELETON_INTERNAL_CUT_SPURIOUS_CYCLES_TOUCHING_CURVES_H
 #define CGAL_GEODESIC_SKELETON_INTERNAL_CUT_SPURIOUS_CYCLES_TOUCHING_CURVES_H
 
-// The separation of touching curves, the first step of cut_spurious_cycles()
-// (include/CGAL/Geodesic_skeleton/cut_spurious_cycles.h), and the two steps together: not
-// part of the API.
+// The moves that pull touching curves apart, which each pass of cut_spurious_cycles()
+// (include/CGAL/Geodesic_skeleton/cut_spurious_cycles.h) tries before its removals
+// (spurious_cycles.h), and the passes themselves: not part of the API.
 
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
