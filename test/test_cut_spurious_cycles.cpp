@@ -170,8 +170,9 @@ BOOST_AUTO_TEST_CASE(near_contacts_of_demo_characters_are_opened)
 BOOST_AUTO_TEST_CASE(touching_curves_are_pulled_apart_not_cut)
 {
   // At resolution 64 the skeletons of the camel's two front legs touch at one voxel (the
-  // legs interpenetrate in the mesh) and so do those of its hind legs (they come within a
-  // voxel): each contact closes a cycle through the body. Removing the voxel of a contact
+  // legs cross: they come within a voxel of each other there, and interpenetrate in the mesh
+  // a little lower), and those of its hind legs touch a one-voxel bridge between them: each
+  // contact closes a cycle through the body. Removing the voxel of a contact
   // would split the skeleton, and the cut used to remove a voxel of a leg above it: that
   // leg's upper part ended in a stub and its lower part hung from the other leg. Moving the
   // voxel of the contact to a free neighbour that still links its own leg opens each cycle
