@@ -12,6 +12,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <boost/property_map/property_map.hpp>
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
@@ -78,9 +79,7 @@ Cut_result cut(const Mesh& mesh, int resolution)
 template <typename VoxelSet>
 std::size_t curve_ends(const VoxelSet& skeleton)
 {
-  std::size_t ends = 0;
-  skeleton.for_each([&](const gs::Voxel_key& k) { ends += gs::skeleton_degree(skeleton, k) == 1; });
-  return ends;
+  return gs::classify_skeleton_points(skeleton, boost::dummy_property_map()).end;
 }
 
 // A horseshoe of five overlapping boxes (two pillars, a bar on top, a foot under each

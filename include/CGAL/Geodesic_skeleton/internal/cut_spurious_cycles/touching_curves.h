@@ -240,10 +240,12 @@ std::size_t cut_spurious_cycles_impl(VoxelSet& skeleton, const FaceGraph& mesh, 
 {
   if(skeleton.size() == 0 || num_faces(mesh) == 0)
     return 0;
-  // A voxel moved by separate_touching_curves() is a neighbour of one of the skeleton: a
-  // margin of one voxel covers it.
-  const Grid_layout layout(require_nonempty_box(skeleton, 1, "cut_spurious_cycles"));
-  Indexed_skeleton_adjacency indexed = indexed_skeleton_adjacency(skeleton, layout);
+  // The graph is indexed over the skeleton's box as it is: a move can take a voxel out of
+  // the box of the pass before (by one voxel per pass).
+  const auto indexed_as_it_is = [&] {
+    return indexed_skeleton_adjacency(skeleton, Grid_layout(require_nonempty_box(skeleton, 0, "cut_spurious_cycles")));
+  };
+  Indexed_skeleton_adjacency indexed = indexed_as_it_is();
   const auto [components, initial_cycles] =
       components_and_cycles(indexed.graph, std::vector<bool>(indexed.graph.nodes.size(), false));
   if(initial_cycles == 0)
@@ -260,7 +262,7 @@ std::size_t cut_spurious_cycles_impl(VoxelSet& skeleton, const FaceGraph& mesh, 
       break;
     cycles = left;
     if(cycles > handles) // another pass, over the graph of the skeleton as changed
-      indexed = indexed_skeleton_adjacency(skeleton, layout);
+      indexed = indexed_as_it_is();
   }
   return initial_cycles - cycles;
 }
