@@ -13,6 +13,7 @@
 #include <CGAL/Geodesic_skeleton/internal/voxelize/mesh_triangles.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -21,6 +22,11 @@
 
 namespace CGAL {
 namespace Geodesic_skeleton {
+namespace internal {
+// Tells Voxelized_surface that its triangles are a mesh's faces then hole-filling fans.
+struct Triangles_of_a_mesh
+{};
+} // namespace internal
 
 /// \ingroup PkgGeodesicSkeletonRef
 /// Where a point lies with respect to a `Voxelized_surface`.
@@ -51,7 +57,8 @@ public:
 
   /// The faces of `mesh` (polygons split into fans), and with `fill_holes` the fans that
   /// close its border cycles as `voxelize()` closes them, in the grid coordinates of
-  /// `frame`.
+  /// `frame`, in an order from which `cut_spurious_cycles()` names the connected component
+  /// of the mesh that each belongs to (to tell where the surface overlaps itself).
   /// \tparam FaceGraph a model of `FaceListGraph`.
   /// \tparam VertexPointMap a readable vertex property map to a CGAL point type.
   /// \throws std::invalid_argument when a vertex has a non-finite coordinate or the mesh
@@ -63,10 +70,21 @@ public:
   {}
 
   /// Takes triangles already in the grid coordinates of `frame` (a triangle with a
-  /// non-finite corner meets no grid line: it is never crossed). O(F) for F triangles.
+  /// non-finite corner meets no grid line: it is never crossed). Their components are not
+  /// known: where they overlap, `cut_spurious_cycles()` cannot tell a surface that overlaps
+  /// itself from separate parts, and takes them for separate parts. O(F) for F triangles.
   Voxelized_surface(const Voxel_frame& frame, std::vector<std::array<Voxel_frame::Vector, 3>> grid_triangles)
     : m_frame(frame), m_lines(std::in_place, std::move(grid_triangles))
   {}
+
+  /// \cond SKIP_IN_MANUAL
+  // A mesh's triangles in grid coordinates, as voxelize() made them (faces, then
+  // hole-filling fans): the stages can name their components (internal::triangle_parts()).
+  Voxelized_surface(const Voxel_frame& frame, std::vector<std::array<Voxel_frame::Vector, 3>> grid_triangles,
+                    internal::Triangles_of_a_mesh)
+    : m_frame(frame), m_lines(std::in_place, std::move(grid_triangles), true)
+  {}
+  /// \endcond
 
   /// The frame whose grid coordinates the triangles are in.
   const Voxel_frame& frame() const { return m_frame; }
@@ -136,6 +154,26 @@ public:
     return *m_built;
   }
 
+  // The connected component of the mesh that each triangle of the surface belongs to
+  // (triangle_parts()), computed on first use; null when the surface's triangles are not
+  // the mesh's faces and fans as triangle_parts() orders them (a surface given as triangles
+  // alone, or whose holes were closed otherwise).
+  const std::vector<std::uint32_t>* triangle_parts()
+  {
+    if(!m_parts_tried)
+    {
+      m_parts_tried = true;
+      const Grid_line_crossings& lines = (*this)();
+      if(lines.of_a_mesh())
+      {
+        std::vector<std::uint32_t> parts = internal::triangle_parts(m_mesh, m_fill_holes);
+        if(parts.size() == lines.triangles().size())
+          m_parts = std::move(parts);
+      }
+    }
+    return m_parts ? &*m_parts : nullptr;
+  }
+
 private:
   const Voxelized_surface* m_given;
   const FaceGraph& m_mesh;
@@ -144,6 +182,8 @@ private:
   bool m_fill_holes;
   const char* m_caller;
   std::optional<Grid_line_crossings> m_built;
+  bool m_parts_tried = false;
+  std::optional<std::vector<std::uint32_t>> m_parts;
 };
 
 } // namespace internal

@@ -39,7 +39,9 @@ namespace Geodesic_skeleton {
 /// conservatively (`voxelize()`'s default) joins parts that come within about a voxel of
 /// each other (a hand resting on a thigh, legs that nearly touch), and `thin()`, which keeps
 /// the solid's topology, turns each such bridge into a cycle of the skeleton. Such a cycle
-/// crosses the gap between the parts, outside the mesh. While the skeleton has more cycles
+/// crosses the gap between the parts, outside the mesh, or through a place where one
+/// connected component of the mesh overlaps itself (limbs that interpenetrate; separate
+/// components that overlap are one solid). While the skeleton has more cycles
 /// than the mesh has handles: first, where the curves of two parts touch across the gap, a
 /// voxel of one curve is moved to a free neighbour inside the mesh that still links its
 /// own curve and no longer touches the other, so that neither curve is cut; then skeleton
@@ -54,7 +56,11 @@ namespace Geodesic_skeleton {
 /// \param skeleton a one-voxel-thick voxel skeleton (`thin()`), in the frame of the mesh's
 ///        voxelization; the removed voxels leave it, and a moved voxel leaves it for a
 ///        26-neighbour inside its bounding box (`bounding_box()`).
-/// \param mesh the mesh.
+/// \param mesh the mesh. Its connected components (by shared vertices) tell a surface that
+///        overlaps itself from separate parts that overlap. They are named for the
+///        triangles of a `voxelized_surface` that `voxelize()` or the mesh constructor of
+///        `Voxelized_surface` made from this mesh, with the same `fill_holes`; the overlaps
+///        of one built from triangles alone are taken for separate parts'.
 /// \param np an optional sequence of \ref manual_named_parameters "named parameters"
 ///        among the ones listed below:
 /// \cgalNamedParamsBegin
@@ -85,7 +91,7 @@ namespace Geodesic_skeleton {
 /// \throws std::invalid_argument when a mesh vertex has a non-finite coordinate, or
 ///      `voxelized_surface` is in another frame.
 ///
-/// \b Complexity: O(S log S + M + F) for S skeleton voxels, M mesh vertices and edges and
+/// \b Complexity: O(S log S + M + F) for S skeleton voxels, M mesh vertices and halfedges and
 ///    F faces (plus the grid cells the faces cover along each axis), and O(S) per move or
 ///    run of voxels tried (the graph of the skeleton as changed is built anew); the moves
 ///    tried are at most 26 per voxel of a cycle with three neighbours or more, and only those

@@ -86,11 +86,13 @@ struct Projected_triangle
   }
 };
 
-// A crossing of a line: where along it, and +1 or -1 by the side the triangle faces.
+// A crossing of a line: where along it, +1 or -1 by the side the triangle faces, and the
+// triangle's index in the soup.
 struct Line_hit
 {
   double at;
   int sign;
+  std::uint32_t triangle;
 };
 
 // The crossings of one line, sorted along it: a view into a Line_hits.
@@ -133,11 +135,14 @@ private:
 // buckets its lines by unit cell of the two other coordinates, and each triangle looks up
 // the cells its box covers (one to four, for triangles about a voxel wide) and tests only
 // the lines there. A call costs O(F + L + C) for F triangles, L lines and C candidate
-// pairs, a triangle far from every line a few integer comparisons.
+// pairs, a triangle far from every line a few integer comparisons. `of_a_mesh` tells that
+// the soup is a mesh's faces then its hole-filling fans, in the order of mesh_triangles()
+// and close_holes() (so that triangle_parts() of the mesh names their components).
 class Grid_line_crossings
 {
 public:
-  explicit Grid_line_crossings(std::vector<Triangle3> g) : m_g(std::move(g)), m_cells(m_g.size())
+  explicit Grid_line_crossings(std::vector<Triangle3> g, bool of_a_mesh = false)
+    : m_g(std::move(g)), m_of_a_mesh(of_a_mesh), m_cells(m_g.size())
   {
     for(std::size_t t = 0; t < m_g.size(); ++t)
     {
@@ -228,7 +233,7 @@ public:
               pt.emplace(g, axis);
             double along;
             if(pt->crossable() && pt->crossing(pu, pv, along))
-              found.emplace_back(in_cell[slot], Line_hit{along, pt->sign()});
+              found.emplace_back(in_cell[slot], Line_hit{along, pt->sign(), std::uint32_t(t)});
           }
         }
     }
@@ -258,11 +263,13 @@ public:
 
   const std::vector<Triangle3>& triangles() const { return m_g; }
   const Cell_box& cells_of(std::size_t triangle) const { return m_cells[triangle]; }
+  bool of_a_mesh() const { return m_of_a_mesh; }
 
 private:
   static constexpr double cell_bound = 1e9;
 
   std::vector<Triangle3> m_g;
+  bool m_of_a_mesh;
   std::vector<Cell_box> m_cells;
 };
 

@@ -25,6 +25,8 @@
 #include <climits>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
+#include <functional>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -137,15 +139,68 @@ inline std::vector<bool> nodes_on_cycles(const Skeleton_adjacency& graph)
   return on_cycle;
 }
 
+// Whether the segment [from, to] of a balanced line passes through a point where one part
+// of the surface winds twice around it (|winding| >= 2 counting that part's crossings
+// only): two pieces of one connected surface overlap there (a camel's front legs that
+// interpenetrate), which is a gap between them as much as a point outside is. A part whose
+// own crossings on the line do not sum to zero cannot tell. Separate parts that overlap
+// (pieces an artist pushed into each other) wind once each: they are one solid.
+// `part_of_triangle` names the part of each triangle of the surface.
+inline bool passes_where_a_part_overlaps_itself(const Hit_range& hits, double from, double to,
+                                                const std::vector<std::uint32_t>& part_of_triangle)
+{
+  // (part, winding so far, sum of all its crossings); a line meets few parts.
+  struct Part_winding
+  {
+    std::uint32_t part;
+    int winding, total;
+  };
+  std::vector<Part_winding> parts;
+  const auto of = [&](std::uint32_t part) -> Part_winding& {
+    for(Part_winding& p : parts)
+      if(p.part == part)
+        return p;
+    parts.push_back(Part_winding{part, 0, 0});
+    return parts.back();
+  };
+  for(const Line_hit& h : hits)
+    of(part_of_triangle[h.triangle]).total += h.sign;
+  const auto overlaps = [](const Part_winding& p) { return p.total == 0 && std::abs(p.winding) >= 2; };
+  bool at_from_checked = false;
+  for(const Line_hit& h : hits)
+  {
+    if(!(h.at < to))
+      break;
+    if(!at_from_checked && !(h.at < from))
+    {
+      at_from_checked = true;
+      if(std::any_of(parts.begin(), parts.end(), overlaps))
+        return true;
+    }
+    Part_winding& p = of(part_of_triangle[h.triangle]);
+    p.winding += h.sign;
+    if(!(h.at < from) && overlaps(p))
+      return true;
+  }
+  return !at_from_checked && std::any_of(parts.begin(), parts.end(), overlaps);
+}
+
 // Whether the straight steps between the centres of 26-adjacent voxels leave the inside of
 // the surface `g` (grid coordinates). A step is walked along the grid axes, through the
 // centres of the voxels between (one, two or three unit moves, in every order); it leaves
-// the inside when every such walk meets a point of winding number zero. A unit move whose
-// line cannot decide (its crossings do not sum to zero) counts as inside.
+// the inside when every such walk meets a point of winding number zero, or a point where a
+// part of the surface overlaps itself (passes_where_a_part_overlaps_itself(), when the
+// part of each triangle is known). A unit move whose line cannot decide (its crossings do
+// not sum to zero) counts as inside. `part_of_triangle()` returns the part of each
+// triangle, or null when they are not known; it is called only when a move passes where
+// the surface winds twice or more (most meshes never overlap, and naming the parts costs
+// a pass over the mesh).
 class Inside_steps
 {
 public:
-  explicit Inside_steps(const Grid_line_crossings& g) : m_g(g) {}
+  Inside_steps(const Grid_line_crossings& g, std::function<const std::vector<std::uint32_t>*()> part_of_triangle)
+    : m_g(g), m_part_of_triangle(std::move(part_of_triangle))
+  {}
 
   // Decides every step of `steps` (pairs of adjacent voxels) at once.
   std::vector<bool> leave_inside(const std::vector<std::pair<Voxel_key, Voxel_key>>& steps)
@@ -200,10 +255,17 @@ public:
         const std::size_t m = std::size_t(first - moves.begin()) + l;
         const double from = moves[m][3] + 0.5, to = from + 1;
         int winding = winding_before(hits[l], from);
-        bool leaves = winding == 0;
+        bool leaves = winding == 0, overlapped = std::abs(winding) >= 2;
         for(const Line_hit& h : hits[l])
           if(h.at >= from && h.at < to)
-            leaves = leaves || (winding += h.sign) == 0;
+          {
+            winding += h.sign;
+            leaves = leaves || winding == 0;
+            overlapped = overlapped || std::abs(winding) >= 2;
+          }
+        if(!leaves && overlapped)
+          if(const std::vector<std::uint32_t>* parts = m_part_of_triangle())
+            leaves = passes_where_a_part_overlaps_itself(hits[l], from, to, *parts);
         move_leaves[m] = leaves;
       }
     }
@@ -221,6 +283,7 @@ public:
 
 private:
   const Grid_line_crossings& m_g;
+  std::function<const std::vector<std::uint32_t>*()> m_part_of_triangle;
 };
 
 // The components and cycle rank of the skeleton's graph without the `removed` nodes of

@@ -169,7 +169,8 @@ Cycle_evidence cycle_evidence(const VoxelSet& skeleton, const Skeleton_adjacency
     steps.insert(steps.end(), move_steps.begin(), move_steps.end());
     first_step.push_back(steps.size());
   }
-  const std::vector<bool> leaves = Inside_steps(mesh_lines()).leave_inside(steps);
+  const std::vector<bool> leaves =
+      Inside_steps(mesh_lines(), [&] { return mesh_lines.triangle_parts(); }).leave_inside(steps);
   e.cycle.leaves.assign(leaves.begin(), leaves.begin() + std::ptrdiff_t(e.cycle.steps.size()));
   for(std::size_t k = 0; k < moves.size(); ++k)
   {
@@ -227,9 +228,10 @@ std::size_t separate_touching_curves(VoxelSet& skeleton, const std::vector<Voxel
   return cycles;
 }
 
-// cut_spurious_cycles() with its inside tests against `mesh_lines` (a callable returning
-// the mesh's Grid_line_crossings in the frame of the skeleton, called only when there are
-// more cycles than handles). Each pass tests the skeleton's graph against the mesh once
+// cut_spurious_cycles() with its inside tests against `mesh_lines` (a Stage_surface:
+// called, it returns the mesh's Grid_line_crossings in the frame of the skeleton, and its
+// triangle_parts() the mesh component of each triangle; used only when there are more
+// cycles than handles). Each pass tests the skeleton's graph against the mesh once
 // (cycle_evidence()); then a move that pulls touching curves apart is tried first
 // (separate_touching_curves(), which cuts no curve), and when one is kept, the pass starts
 // again on the skeleton as moved; else voxels with a step out of the mesh are removed

@@ -15,12 +15,15 @@
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <cstddef>
+#include <cstdint>
+#include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -138,6 +141,46 @@ inline void to_grid(std::vector<Triangle3>& triangles, const Voxel_frame& frame)
       corner = frame.to_grid(corner);
 }
 
+// The part of each triangle of mesh_triangles() (n - 2 per face, in the order of the faces)
+// and, with `fill_holes`, of each triangle of close_holes() (one per border halfedge of
+// each hole): the connected component of the mesh, by shared vertices, named by one of its
+// vertices' index. O(V + H log H) for V vertices and H halfedges.
+template <typename FaceGraph>
+std::vector<std::uint32_t> triangle_parts(const FaceGraph& mesh, bool fill_holes)
+{
+  const auto vim = CGAL::get_initialized_vertex_index_map(mesh);
+  const auto index = [&](auto v) { return std::uint32_t(get(vim, v)); };
+  std::vector<std::uint32_t> root(static_cast<std::size_t>(num_vertices(mesh)));
+  std::iota(root.begin(), root.end(), std::uint32_t(0));
+  const auto find = [&](std::uint32_t v) {
+    while(root[v] != v)
+      v = root[v] = root[root[v]];
+    return v;
+  };
+  for(auto e : edges(mesh))
+  {
+    const std::uint32_t a = find(index(source(e, mesh))), b = find(index(target(e, mesh)));
+    root[(std::max)(a, b)] = (std::min)(a, b);
+  }
+  std::vector<std::uint32_t> parts;
+  parts.reserve(static_cast<std::size_t>(num_faces(mesh)));
+  for(auto f : faces(mesh))
+  {
+    const auto h = halfedge(f, mesh);
+    std::size_t corners = 1;
+    for(auto g = next(h, mesh); g != h; g = next(g, mesh))
+      ++corners;
+    if(corners >= 3)
+      parts.insert(parts.end(), corners - 2, find(index(target(h, mesh))));
+  }
+  if(fill_holes)
+    for_each_border_cycle(mesh, [&](const auto& cycle) {
+      if(cycle.size() >= 3)
+        parts.insert(parts.end(), cycle.size(), find(index(target(cycle.front(), mesh))));
+    });
+  return parts;
+}
+
 // The faces of `mesh` (and, with `fill_holes`, the fans that close its holes) in the grid
 // coordinates of `frame`, ready for inside tests along grid lines.
 template <typename FaceGraph, typename VertexPointMap>
@@ -148,7 +191,7 @@ Grid_line_crossings mesh_grid_lines(const FaceGraph& mesh, VertexPointMap vpm, c
   if(fill_holes)
     close_holes(mesh, vpm, triangles);
   to_grid(triangles, frame);
-  return Grid_line_crossings(std::move(triangles));
+  return Grid_line_crossings(std::move(triangles), true);
 }
 
 } // namespace internal

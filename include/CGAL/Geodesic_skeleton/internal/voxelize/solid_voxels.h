@@ -253,7 +253,7 @@ std::size_t voxelize_impl(const FaceGraph& mesh, VoxelSet& voxels, const NamedPa
   });
   if(Voxelized_surface* surface = choose_parameter(get_parameter(np, internal_np::voxelized_surface_output_tag),
                                                    static_cast<Voxelized_surface*>(nullptr)))
-    *surface = Voxelized_surface(frame, std::move(grid_triangles));
+    *surface = Voxelized_surface(frame, std::move(grid_triangles), internal::Triangles_of_a_mesh{});
   return count;
 }
 
