@@ -9,6 +9,7 @@
 // count its crossings along grid lines).
 
 #include <CGAL/Geodesic_skeleton/Voxel_frame.h>
+#include <CGAL/Geodesic_skeleton/internal/geodesics/vertex_components.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_line_crossings.h>
 #include <CGAL/Geodesic_skeleton/internal/voxelize/polygon_triangles.h>
 #include <CGAL/Geodesic_skeleton/internal/voxelize/principal_frame.h>
@@ -22,7 +23,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -143,25 +143,14 @@ inline void to_grid(std::vector<Triangle3>& triangles, const Voxel_frame& frame)
 
 // The part of each triangle of mesh_triangles() (n - 2 per face, in the order of the faces)
 // and, with `fill_holes`, of each triangle of close_holes() (one per border halfedge of
-// each hole): the connected component of the mesh, by shared vertices, named by one of its
-// vertices' index. O(V + H log H) for V vertices and H halfedges.
+// each hole): the connected component of the mesh (vertex_components(), through its
+// edges). O(V + E + H log H) for V vertices, E edges and H halfedges.
 template <typename FaceGraph>
 std::vector<std::uint32_t> triangle_parts(const FaceGraph& mesh, bool fill_holes)
 {
   const auto vim = CGAL::get_initialized_vertex_index_map(mesh);
-  const auto index = [&](auto v) { return std::uint32_t(get(vim, v)); };
-  std::vector<std::uint32_t> root(static_cast<std::size_t>(num_vertices(mesh)));
-  std::iota(root.begin(), root.end(), std::uint32_t(0));
-  const auto find = [&](std::uint32_t v) {
-    while(root[v] != v)
-      v = root[v] = root[root[v]];
-    return v;
-  };
-  for(auto e : edges(mesh))
-  {
-    const std::uint32_t a = find(index(source(e, mesh))), b = find(index(target(e, mesh)));
-    root[(std::max)(a, b)] = (std::min)(a, b);
-  }
+  const std::vector<std::size_t> component = vertex_components(mesh, vim).component_of;
+  const auto part = [&](auto v) { return std::uint32_t(component[static_cast<std::size_t>(get(vim, v))]); };
   std::vector<std::uint32_t> parts;
   parts.reserve(static_cast<std::size_t>(num_faces(mesh)));
   for(auto f : faces(mesh))
@@ -171,12 +160,12 @@ std::vector<std::uint32_t> triangle_parts(const FaceGraph& mesh, bool fill_holes
     for(auto g = next(h, mesh); g != h; g = next(g, mesh))
       ++corners;
     if(corners >= 3)
-      parts.insert(parts.end(), corners - 2, find(index(target(h, mesh))));
+      parts.insert(parts.end(), corners - 2, part(target(h, mesh)));
   }
   if(fill_holes)
     for_each_border_cycle(mesh, [&](const auto& cycle) {
       if(cycle.size() >= 3)
-        parts.insert(parts.end(), cycle.size(), find(index(target(cycle.front(), mesh))));
+        parts.insert(parts.end(), cycle.size(), part(target(cycle.front(), mesh)));
     });
   return parts;
 }
