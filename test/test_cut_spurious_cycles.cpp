@@ -117,8 +117,8 @@ Mesh coiled_tube(int pieces)
     for(int i = first; i < last; ++i)
       for(int k = 0; k < 4; ++k)
         s.add_quad(at(i, k), at(i + 1, k), at(i + 1, k + 1), at(i, k + 1));
-    s.add_quad(at(first, 3), at(first, 2), at(first, 1), at(first, 0));
-    s.add_quad(at(last, 0), at(last, 1), at(last, 2), at(last, 3));
+    s.add_quad(at(first, 0), at(first, 1), at(first, 2), at(first, 3));
+    s.add_quad(at(last, 3), at(last, 2), at(last, 1), at(last, 0));
   };
   if(pieces == 1)
     add_tube(0, sections);
@@ -127,7 +127,9 @@ Mesh coiled_tube(int pieces)
     add_tube(0, sections / 2 + 4);
     add_tube(sections / 2 - 4, sections);
   }
-  return test::mesh_of<Mesh>(s);
+  const Mesh mesh = test::mesh_of<Mesh>(s);
+  BOOST_TEST_REQUIRE(CGAL::is_closed(mesh)); // each tube a closed surface
+  return mesh;
 }
 
 // The skeleton had one cycle, and the cut opened it without splitting the skeleton.
