@@ -166,23 +166,19 @@ inline bool passes_where_a_part_overlaps_itself(const Hit_range& hits, double fr
   for(const Line_hit& h : hits)
     of(part_of_triangle[h.triangle]).total += h.sign;
   const auto overlaps = [](const Part_winding& p) { return p.total == 0 && std::abs(p.winding) >= 2; };
-  bool at_from_checked = false;
-  for(const Line_hit& h : hits)
+  const Line_hit* h = hits.begin();
+  for(; h != hits.end() && h->at < from; ++h) // the windings at `from`
+    of(part_of_triangle[h->triangle]).winding += h->sign;
+  if(std::any_of(parts.begin(), parts.end(), overlaps))
+    return true;
+  for(; h != hits.end() && h->at < to; ++h) // and where they change on the segment
   {
-    if(!(h.at < to))
-      break;
-    if(!at_from_checked && !(h.at < from))
-    {
-      at_from_checked = true;
-      if(std::any_of(parts.begin(), parts.end(), overlaps))
-        return true;
-    }
-    Part_winding& p = of(part_of_triangle[h.triangle]);
-    p.winding += h.sign;
-    if(!(h.at < from) && overlaps(p))
+    Part_winding& p = of(part_of_triangle[h->triangle]);
+    p.winding += h->sign;
+    if(overlaps(p))
       return true;
   }
-  return !at_from_checked && std::any_of(parts.begin(), parts.end(), overlaps);
+  return false;
 }
 
 // Whether the straight steps between the centres of 26-adjacent voxels leave the inside of

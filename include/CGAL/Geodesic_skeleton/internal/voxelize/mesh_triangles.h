@@ -155,12 +155,9 @@ std::vector<std::uint32_t> triangle_parts(const FaceGraph& mesh, bool fill_holes
   parts.reserve(static_cast<std::size_t>(num_faces(mesh)));
   for(auto f : faces(mesh))
   {
-    const auto h = halfedge(f, mesh);
-    std::size_t corners = 1;
-    for(auto g = next(h, mesh); g != h; g = next(g, mesh))
-      ++corners;
+    const std::size_t corners = static_cast<std::size_t>(degree(f, mesh));
     if(corners >= 3)
-      parts.insert(parts.end(), corners - 2, part(target(h, mesh)));
+      parts.insert(parts.end(), corners - 2, part(target(halfedge(f, mesh), mesh)));
   }
   if(fill_holes)
     for_each_border_cycle(mesh, [&](const auto& cycle) {
