@@ -154,6 +154,17 @@ public:
     return *m_built;
   }
 
+  VertexPointMap vertex_point_map() const { return m_vpm; }
+
+  // The connected components of the mesh's vertices (vertex_components()), computed on
+  // first use.
+  const Vertex_components& vertex_components()
+  {
+    if(!m_components)
+      m_components = internal::vertex_components(m_mesh, CGAL::get_initialized_vertex_index_map(m_mesh));
+    return *m_components;
+  }
+
   // The connected component of the mesh that each triangle of the surface belongs to
   // (triangle_parts()), computed on first use; null when the surface's triangles are not
   // the mesh's faces and fans as triangle_parts() orders them (a surface given as triangles
@@ -166,7 +177,7 @@ public:
       const Grid_line_crossings& lines = (*this)();
       if(lines.of_a_mesh())
       {
-        std::vector<std::uint32_t> parts = internal::triangle_parts(m_mesh, m_fill_holes);
+        std::vector<std::uint32_t> parts = internal::triangle_parts(m_mesh, m_fill_holes, vertex_components());
         if(parts.size() == lines.triangles().size())
           m_parts = std::move(parts);
       }
@@ -182,6 +193,7 @@ private:
   bool m_fill_holes;
   const char* m_caller;
   std::optional<Grid_line_crossings> m_built;
+  std::optional<Vertex_components> m_components;
   bool m_parts_tried = false;
   std::optional<std::vector<std::uint32_t>> m_parts;
 };

@@ -45,7 +45,9 @@ namespace Geodesic_skeleton {
 /// than the mesh has handles: first, where the curves of two parts touch across the gap, a
 /// voxel of one curve is moved to a free neighbour inside the mesh that still links its
 /// own curve and no longer touches the other, so that neither curve is cut; then skeleton
-/// voxels with a step that leaves the mesh are removed. Either is kept where it opens a
+/// voxels with a step that leaves the mesh are removed, those farthest along the mesh's
+/// surface from the middle of the model first (the tip of a tail that rests on a leg, not
+/// its root). Either is kept where it opens a
 /// cycle without splitting a connected component, the cycles counted on the graph of the
 /// skeleton as changed (as `to_graph()` would make it). The method, what it keeps and its
 /// limits are described in the manual, section \ref manual_cut_spurious_cycles.
@@ -57,7 +59,8 @@ namespace Geodesic_skeleton {
 ///        voxelization; the removed voxels leave it, and a moved voxel leaves it for a
 ///        26-neighbour inside its bounding box (`bounding_box()`).
 /// \param mesh the mesh. Its connected components (by shared vertices) tell a surface that
-///        overlaps itself from separate parts that overlap. They are named for the
+///        overlaps itself from separate parts that overlap; its edges measure how far along
+///        the surface the voxels that a removal chooses among lie. They are named for the
 ///        triangles of a `voxelized_surface` that `voxelize()` or the mesh constructor of
 ///        `Voxelized_surface` made from this mesh, with the same `fill_holes`; the overlaps
 ///        of one built from triangles alone are taken for separate parts'.
@@ -97,7 +100,10 @@ namespace Geodesic_skeleton {
 ///    tried are at most 26 per voxel of a cycle with three neighbours or more, and only those
 ///    that pass the local tests (O(1) each) are counted on the graph; the removals are tried
 ///    per pass, a pass repeated only while it opens cycles; nothing beyond counting the
-///    cycles when there are no more than handles.
+///    cycles when there are no more than handles. When a pass removes voxels, once per call:
+///    O(E + M Q) for E edges and Q single voxels tried (their nearest vertices), and shortest
+///    paths along the edges in buckets as wide as the mean edge, about O(M + E) on a mesh
+///    whose edges are of like lengths.
 template <typename VoxelSet, typename FaceGraph,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 std::size_t cut_spurious_cycles(VoxelSet& skeleton, const FaceGraph& mesh,

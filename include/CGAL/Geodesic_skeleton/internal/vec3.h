@@ -24,6 +24,7 @@ inline Vec3 cross3(const Vec3& a, const Vec3& b)
   return Vec3{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 inline double norm3(const Vec3& a) { return std::sqrt(dot3(a, a)); }
+inline double squared_distance3(const Vec3& a, const Vec3& b) { return dot3(sub(a, b), sub(a, b)); }
 
 // Distance from p to the segment [a, b].
 inline double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b)

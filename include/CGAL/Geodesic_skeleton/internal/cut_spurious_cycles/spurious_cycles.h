@@ -9,6 +9,7 @@
 #include <CGAL/Geodesic_skeleton/Voxelized_surface.h>
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
+#include <CGAL/Geodesic_skeleton/internal/geodesics/vertex_components.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_line_crossings.h>
 #include <CGAL/Geodesic_skeleton/internal/voxelize/mesh_triangles.h>
 #include <CGAL/Geodesic_skeleton/internal/to_graph/skeleton_adjacency.h>
@@ -38,30 +39,33 @@ namespace internal {
 // The number of handles the mesh's surface has: the sum over its connected components of
 // the genus (2 - chi) / 2 of the component with each hole capped by a disc (chi = V - E + F
 // + holes). For a closed, embedded, orientable mesh whose components do not overlap, it is
-// the number of tunnels of the solid it bounds.
+// the number of tunnels of the solid it bounds. `components`: the mesh's
+// vertex_components().
+template <typename FaceGraph>
+std::size_t capped_genus_sum(const FaceGraph& mesh, const Vertex_components& components)
+{
+  const auto vim = CGAL::get_initialized_vertex_index_map(mesh);
+  const auto component = [&](auto v) { return components.component_of[std::size_t(get(vim, v))]; };
+  std::vector<long> chi(components.count, 0);
+  for(auto v : vertices(mesh))
+    ++chi[component(v)];
+  for(auto e : edges(mesh))
+    --chi[component(source(e, mesh))];
+  for(auto f : faces(mesh))
+    ++chi[component(target(halfedge(f, mesh), mesh))];
+  // Holes: cycles of border halfedges, each capped by a disc.
+  for_each_border_cycle(mesh, [&](const auto& cycle) { ++chi[component(target(cycle.front(), mesh))]; });
+  std::size_t genus = 0;
+  for(long c : chi)
+    if(c < 2)
+      genus += std::size_t((2 - c) / 2);
+  return genus;
+}
+
 template <typename FaceGraph>
 std::size_t capped_genus_sum(const FaceGraph& mesh)
 {
-  const auto vim = CGAL::get_initialized_vertex_index_map(mesh);
-  const std::size_t n = static_cast<std::size_t>(num_vertices(mesh));
-  boost::disjoint_sets_with_storage<> components(n);
-  auto root = [&](auto v) { return components.find_set(std::size_t(get(vim, v))); };
-  for(auto e : edges(mesh))
-    components.union_set(std::size_t(get(vim, source(e, mesh))), std::size_t(get(vim, target(e, mesh))));
-  std::vector<long> chi(n, 0); // indexed by a component's root
-  for(auto v : vertices(mesh))
-    ++chi[root(v)];
-  for(auto e : edges(mesh))
-    --chi[root(source(e, mesh))];
-  for(auto f : faces(mesh))
-    ++chi[root(target(halfedge(f, mesh), mesh))];
-  // Holes: cycles of border halfedges, each capped by a disc.
-  for_each_border_cycle(mesh, [&](const auto& cycle) { ++chi[root(target(cycle.front(), mesh))]; });
-  std::size_t genus = 0;
-  for(std::size_t r = 0; r < n; ++r)
-    if(components.find_set(r) == r && chi[r] < 2)
-      genus += std::size_t((2 - chi[r]) / 2);
-  return genus;
+  return capped_genus_sum(mesh, vertex_components(mesh, CGAL::get_initialized_vertex_index_map(mesh)));
 }
 
 // Components and cycle rank (E - V + C) of the graph restricted to the nodes not removed.
@@ -332,11 +336,19 @@ inline Cycle_steps cycle_steps(const Skeleton_adjacency& graph, const std::vecto
 }
 
 // What a pass of the cut tries removing, in order: single voxels of `graph` on cycles with a
-// step out of the mesh's inside (`cycle`, from cycle_steps() with its `leaves` filled; those
-// whose every step leaves, i.e. whose centre is outside, first, then by the number of steps
-// out: a voxel of the cycle on a side of the gap), then runs of such voxels (connected
-// groups, shortest first), for where removing one voxel would split the skeleton.
-inline std::vector<std::vector<std::size_t>> cut_trials(const Skeleton_adjacency& graph, const Cycle_steps& cycle)
+// step out of the mesh's inside (`cycle`, from cycle_steps() with its `leaves` filled): those
+// whose every step leaves, i.e. whose centre is outside, first; then the others, by the
+// number of steps out (a voxel of the cycle on a side of the gap; cut_pass() orders both
+// again); then runs of such voxels (connected groups, shortest first), for where removing one
+// voxel would split the skeleton.
+struct Cut_trials
+{
+  std::vector<std::vector<std::size_t>> trials;
+  std::size_t centre_outside = 0; // trials [0, centre_outside) are the voxels whose centre is outside
+  std::size_t singles = 0;        // and [centre_outside, singles) the other single voxels
+};
+
+inline Cut_trials cut_trials(const Skeleton_adjacency& graph, const Cycle_steps& cycle)
 {
   const auto& steps = cycle.steps;
   const auto& step_edge = cycle.edge;
@@ -357,9 +369,14 @@ inline std::vector<std::vector<std::size_t>> cut_trials(const Skeleton_adjacency
     const bool a_out = leaving_steps[a] == steps_on_cycles[a], b_out = leaving_steps[b] == steps_on_cycles[b];
     return a_out != b_out ? a_out : leaving_steps[a] > leaving_steps[b];
   });
-  std::vector<std::vector<std::size_t>> trials;
+  Cut_trials result;
+  std::vector<std::vector<std::size_t>>& trials = result.trials;
   for(std::size_t v : singles)
+  {
+    result.centre_outside += leaving_steps[v] == steps_on_cycles[v];
     trials.push_back({v});
+  }
+  result.singles = trials.size();
   boost::disjoint_sets_with_storage<> runs_of(graph.nodes.size());
   for(const auto& e : graph.edges)
     if(leaving_steps[std::size_t(e.first)] > 0 && leaving_steps[std::size_t(e.second)] > 0)
@@ -383,26 +400,57 @@ inline std::vector<std::vector<std::size_t>> cut_trials(const Skeleton_adjacency
   for(auto& run : runs)
     if(run.size() > 1)
       trials.push_back(std::move(run));
-  return trials;
+  return result;
+}
+
+// Sorts the single voxels of `cut` farthest from the middle first, those whose centre is
+// outside, then the others (stable: ties keep their order). Asks for no distance when
+// neither group has two voxels to order.
+template <typename DistancesFromTheMiddle>
+void order_farthest_from_the_middle(Cut_trials& cut, const Skeleton_adjacency& graph,
+                                    DistancesFromTheMiddle& distances_from_the_middle)
+{
+  if(cut.centre_outside < 2 && cut.singles - cut.centre_outside < 2)
+    return;
+  std::vector<Voxel_key> voxels;
+  for(std::size_t t = 0; t < cut.singles; ++t)
+    voxels.push_back(graph.nodes[cut.trials[t].front()]);
+  const std::vector<double> distance = distances_from_the_middle(voxels);
+  std::vector<std::pair<double, std::vector<std::size_t>>> ranked;
+  for(std::size_t t = 0; t < cut.singles; ++t)
+    ranked.emplace_back(distance[t], std::move(cut.trials[t]));
+  const auto farther = [](const auto& a, const auto& b) { return a.first > b.first; };
+  std::stable_sort(ranked.begin(), ranked.begin() + std::ptrdiff_t(cut.centre_outside), farther);
+  std::stable_sort(ranked.begin() + std::ptrdiff_t(cut.centre_outside), ranked.end(), farther);
+  for(std::size_t t = 0; t < cut.singles; ++t)
+    cut.trials[t] = std::move(ranked[t].second);
 }
 
 // One pass of the cut over `indexed`, the skeleton's graph as it is, which has `cycles`
-// cycles, more than `handles`: tries `trials` (cut_trials() of that graph) in order, keeping
+// cycles, more than `handles`: tries `cut` (cut_trials() of that graph) in order, keeping
 // each removal that lowers the number of cycles (counted on the graph rebuilt without the
 // removed voxels) without splitting a component, while there are more cycles than
 // `handles`. Returns the number of cycles left.
-template <typename VoxelSet>
+//
+// The single voxels are tried farthest first by `distances_from_the_middle(voxels)` (how
+// far along the mesh's surface each voxel lies from the middle of the model), those whose
+// centre is outside before the others, ties in cut_trials()' order. What touches another
+// part is most often the tip of a limb or of a tail, and a thin part pokes out of its own
+// surface all along, so that voxels of its curve are outside at its root as well as where
+// its tip touches: the tip's lie farther along the surface, and the part stays hung from
+// its root.
+template <typename VoxelSet, typename DistancesFromTheMiddle>
 std::size_t cut_pass(VoxelSet& skeleton, const Indexed_skeleton_adjacency& indexed, std::size_t cycles,
-                     const std::vector<std::vector<std::size_t>>& trials, std::size_t handles)
+                     Cut_trials cut, std::size_t handles, DistancesFromTheMiddle distances_from_the_middle)
 {
   const Skeleton_adjacency& graph = indexed.graph;
   std::vector<bool> removed(graph.nodes.size(), false);
   const std::size_t components = components_and_cycles(graph, removed).first;
   const auto node_of = [&](const Voxel_key& k) { return indexed.node_of(k); };
-  for(const auto& trial : trials)
+  order_farthest_from_the_middle(cut, graph, distances_from_the_middle);
+  for(std::size_t t = 0; t < cut.trials.size() && cycles > handles; ++t)
   {
-    if(cycles <= handles)
-      break;
+    const std::vector<std::size_t>& trial = cut.trials[t];
     std::vector<std::size_t> fresh;
     for(std::size_t v : trial)
       if(!removed[v])

@@ -10,6 +10,7 @@
 
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
+#include <CGAL/Geodesic_skeleton/internal/cut_spurious_cycles/distance_from_the_middle.h>
 #include <CGAL/Geodesic_skeleton/internal/cut_spurious_cycles/spurious_cycles.h>
 #include <CGAL/Geodesic_skeleton/internal/to_graph/skeleton_adjacency.h>
 
@@ -17,6 +18,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdlib>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -235,8 +237,9 @@ std::size_t separate_touching_curves(VoxelSet& skeleton, const std::vector<Voxel
 // (cycle_evidence()); then a move that pulls touching curves apart is tried first
 // (separate_touching_curves(), which cuts no curve), and when one is kept, the pass starts
 // again on the skeleton as moved; else voxels with a step out of the mesh are removed
-// (cut_pass()). Passes are repeated while they open cycles: a change can free edges whose
-// steps the next pass tests.
+// (cut_pass(), those farthest along the surface from the middle of the model first).
+// Passes are repeated while they open cycles: a change can free edges whose steps the next
+// pass tests.
 template <typename VoxelSet, typename FaceGraph, typename MeshLines>
 std::size_t cut_spurious_cycles_impl(VoxelSet& skeleton, const FaceGraph& mesh, MeshLines& mesh_lines)
 {
@@ -252,14 +255,24 @@ std::size_t cut_spurious_cycles_impl(VoxelSet& skeleton, const FaceGraph& mesh, 
       components_and_cycles(indexed.graph, std::vector<bool>(indexed.graph.nodes.size(), false));
   if(initial_cycles == 0)
     return 0;
-  const std::size_t handles = capped_genus_sum(mesh);
+  const std::size_t handles = capped_genus_sum(mesh, mesh_lines.vertex_components());
+  std::optional<Surface_distance_from_the_middle> from_the_middle; // built when a pass first cuts
+  const auto distances_from_the_middle = [&](const std::vector<Voxel_key>& voxels) {
+    if(!from_the_middle)
+      from_the_middle.emplace(mesh, mesh_lines.vertex_point_map(), mesh_lines.vertex_components());
+    std::vector<Vec3> centres;
+    for(const Voxel_key& k : voxels)
+      centres.push_back(skeleton.frame().centre(k));
+    return (*from_the_middle)(centres);
+  };
   std::size_t cycles = initial_cycles;
   while(cycles > handles)
   {
     const Cycle_evidence evidence = cycle_evidence(skeleton, indexed.graph, mesh_lines);
     std::size_t left = separate_touching_curves(skeleton, evidence.moves_across_a_gap, cycles, components, handles);
     if(left == cycles)
-      left = cut_pass(skeleton, indexed, cycles, cut_trials(indexed.graph, evidence.cycle), handles);
+      left = cut_pass(skeleton, indexed, cycles, cut_trials(indexed.graph, evidence.cycle), handles,
+                      distances_from_the_middle);
     if(left >= cycles)
       break;
     cycles = left;

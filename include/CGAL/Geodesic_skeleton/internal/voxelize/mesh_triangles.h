@@ -143,13 +143,13 @@ inline void to_grid(std::vector<Triangle3>& triangles, const Voxel_frame& frame)
 
 // The part of each triangle of mesh_triangles() (n - 2 per face, in the order of the faces)
 // and, with `fill_holes`, of each triangle of close_holes() (one per border halfedge of
-// each hole): the connected component of the mesh (vertex_components(), through its
-// edges). O(V + E + H log H) for V vertices, E edges and H halfedges.
+// each hole): its connected component in `components` (the mesh's vertex_components(),
+// through its edges). O(V + H log H) for V vertices and H halfedges.
 template <typename FaceGraph>
-std::vector<std::uint32_t> triangle_parts(const FaceGraph& mesh, bool fill_holes)
+std::vector<std::uint32_t> triangle_parts(const FaceGraph& mesh, bool fill_holes, const Vertex_components& components)
 {
   const auto vim = CGAL::get_initialized_vertex_index_map(mesh);
-  const std::vector<std::size_t> component = vertex_components(mesh, vim).component_of;
+  const std::vector<std::size_t>& component = components.component_of;
   const auto part = [&](auto v) { return std::uint32_t(component[static_cast<std::size_t>(get(vim, v))]); };
   std::vector<std::uint32_t> parts;
   parts.reserve(static_cast<std::size_t>(num_faces(mesh)));
