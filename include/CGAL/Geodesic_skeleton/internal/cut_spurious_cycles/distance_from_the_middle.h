@@ -13,7 +13,6 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -25,23 +24,16 @@ namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
 
-// The surface's area and its area-weighted centroid, all its connected components
-// together (each face's area at its centroid, a polygon as the fan of triangles from its
-// first corner; the mean of the vertices for a surface without area): a middle of the
-// model that does not depend on how finely each part is tessellated, and that moves with
-// the mesh.
-struct Surface_moments
-{
-  double area = 0;
-  Vec3 centroid{0, 0, 0};
-};
-
+// The area-weighted centroid of the surface, all its connected components together (each
+// face's area at its centroid, a polygon as the fan of triangles from its first corner; the
+// mean of the vertices for a surface without area): a middle of the model that does not
+// depend on how finely each part is tessellated, and that moves with the mesh.
 template <typename FaceGraph, typename VertexIndexMap>
-Surface_moments surface_moments(const FaceGraph& mesh, VertexIndexMap vim, const std::vector<Vec3>& point)
+Vec3 surface_centroid(const FaceGraph& mesh, VertexIndexMap vim, const std::vector<Vec3>& point)
 {
   const auto at = [&](auto v) -> const Vec3& { return point[static_cast<std::size_t>(get(vim, v))]; };
-  Surface_moments m;
   Vec3 weighted{0, 0, 0};
+  double area = 0;
   for(auto f : faces(mesh))
   {
     const auto h = halfedge(f, mesh);
@@ -50,21 +42,19 @@ Surface_moments surface_moments(const FaceGraph& mesh, VertexIndexMap vim, const
     {
       const Vec3& b = at(target(k, mesh));
       const Vec3& c = at(target(next(k, mesh), mesh));
-      const double area = norm3(cross3(sub(b, a), sub(c, a))) / 2;
+      const double triangle_area = norm3(cross3(sub(b, a), sub(c, a))) / 2;
       for(std::size_t d = 0; d < 3; ++d)
-        weighted[d] += area * (a[d] + b[d] + c[d]) / 3;
-      m.area += area;
+        weighted[d] += triangle_area * (a[d] + b[d] + c[d]) / 3;
+      area += triangle_area;
     }
   }
-  if(m.area > 0)
-    m.centroid = {weighted[0] / m.area, weighted[1] / m.area, weighted[2] / m.area};
-  else if(!point.empty())
-  {
-    for(const Vec3& p : point)
-      for(std::size_t d = 0; d < 3; ++d)
-        m.centroid[d] += p[d] / double(point.size());
-  }
-  return m;
+  if(area > 0)
+    return Vec3{weighted[0] / area, weighted[1] / area, weighted[2] / area};
+  Vec3 mean{0, 0, 0};
+  for(const Vec3& p : point)
+    for(std::size_t d = 0; d < 3; ++d)
+      mean[d] += p[d] / double(point.size());
+  return mean;
 }
 
 // Of each connected component, the vertex nearest `middle` (by index).
@@ -124,13 +114,22 @@ Mesh_adjacency mesh_adjacency(const FaceGraph& mesh, VertexIndexMap vim, const s
 
 // The lengths of the shortest paths along `graph` from `sources` (vertex indices), by
 // index; infinity for a vertex never reached, and an edge of non-finite length (a vertex at
-// NaN or infinity) links nothing. The vertices are taken in buckets of distance `width`
-// wide (Dial's order, label-correcting: a vertex improved after it was taken is taken again,
-// so the lengths are exact whatever the width). O(V + E + D / width) for a largest length D,
-// in practice, with a width about as long as the mesh's edges.
-inline std::vector<float> shortest_path_lengths(const Mesh_adjacency& graph, const std::vector<std::size_t>& sources,
-                                                double width)
+// NaN or infinity) links nothing. The vertices are taken in buckets of distance as wide as
+// the mean edge (Dial's order, label-correcting: a vertex improved after it was taken is
+// taken again, so the lengths are exact whatever the width). No path is longer than all
+// the edges together, so there are at most as many buckets as edge ends; O(V + E) in
+// practice, since a mesh's edges are about as long as each other.
+inline std::vector<float> shortest_path_lengths(const Mesh_adjacency& graph, const std::vector<std::size_t>& sources)
 {
+  double total = 0;
+  std::size_t finite = 0;
+  for(float l : graph.length)
+    if(std::isfinite(l))
+    {
+      total += double(l);
+      ++finite;
+    }
+  const double width = total > 0 ? total / double(finite) : 1;
   std::vector<float> distance(graph.first.size() - 1, std::numeric_limits<float>::infinity());
   const auto bucket_of = [&](float d) { return std::size_t(double(d) / width); };
   std::vector<std::vector<std::uint32_t>> buckets(1);
@@ -186,8 +185,7 @@ inline std::vector<std::size_t> nearest_vertices(const std::vector<Vec3>& point,
 // of its own. `components`: the mesh's vertex_components().
 //
 // Complexity: O(F + E) to build, for F face corners and E edges, in practice (one run of
-// shortest_path_lengths(), in buckets as wide as the side of a right isosceles triangle of
-// the mean face area), and O(V Q) for Q points asked (their nearest vertices, by brute
+// shortest_path_lengths()), and O(V Q) for Q points asked (their nearest vertices, by brute
 // force: the points are the few voxels a cut chooses among).
 class Surface_distance_from_the_middle
 {
@@ -205,12 +203,9 @@ public:
     }
     if(m_point.empty())
       return;
-    const Surface_moments moments = surface_moments(mesh, vim, m_point);
-    const double faces_count = std::max(1.0, double(num_faces(mesh)));
-    const double width = moments.area > 0 && std::isfinite(moments.area) ? std::sqrt(2 * moments.area / faces_count) : 1;
-    m_distance = shortest_path_lengths(mesh_adjacency(mesh, vim, m_point),
-                                       nearest_vertex_per_component(mesh, vim, m_point, components, moments.centroid),
-                                       width);
+    m_distance = shortest_path_lengths(
+        mesh_adjacency(mesh, vim, m_point),
+        nearest_vertex_per_component(mesh, vim, m_point, components, surface_centroid(mesh, vim, m_point)));
   }
 
   // The distance of each of `points` (world coordinates); infinity for a mesh without
@@ -226,7 +221,7 @@ public:
   }
 
 private:
-  std::vector<Vec3> m_point;      // by vertex index
+  std::vector<Vec3> m_point;     // by vertex index
   std::vector<float> m_distance; // by vertex index
 };
 
