@@ -98,6 +98,26 @@ Mesh horseshoe(double gap)
   return test::mesh_of<Mesh>(s);
 }
 
+// The four corners of a square section of a tube, turning the same way in every section.
+using Tube_section = std::array<std::array<double, 3>, 4>;
+
+// Appends to `s` a tube through `sections` (two or more), capped at both ends: one closed
+// surface.
+void add_capped_tube(test::Soup& s, const std::vector<Tube_section>& sections)
+{
+  const std::size_t base = s.points.size();
+  for(const Tube_section& section : sections)
+    for(const auto& p : section)
+      s.add_point(p[0], p[1], p[2]);
+  const auto at = [&](std::size_t section, int corner) { return base + 4 * section + std::size_t(corner % 4); };
+  for(std::size_t i = 0; i + 1 < sections.size(); ++i)
+    for(int k = 0; k < 4; ++k)
+      s.add_quad(at(i, k), at(i + 1, k), at(i + 1, k + 1), at(i, k + 1));
+  const std::size_t last = sections.size() - 1;
+  s.add_quad(at(0, 0), at(0, 1), at(0, 2), at(0, 3));
+  s.add_quad(at(last, 3), at(last, 2), at(last, 1), at(last, 0));
+}
+
 // A tube of square section (1 unit wide) coiled a little more than once around the z axis
 // (from angle 0 to 2 pi + 1, its radius growing from 3 to 3.3 units so that its ends
 // overlap without coinciding), capped, in `pieces` parts: one connected surface whose two
@@ -109,19 +129,16 @@ Mesh coiled_tube(int pieces)
   const int sections = 80;
   test::Soup s;
   const auto add_tube = [&](int first, int last) {
-    const std::size_t base = s.points.size();
+    std::vector<Tube_section> tube;
     for(int i = first; i <= last; ++i)
     {
       const double angle = turn * i / sections, radius = 3 + 0.3 * angle / (2 * test::pi);
+      Tube_section& section = tube.emplace_back();
+      int corner = 0;
       for(const auto& [dr, dz] : {std::pair{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}})
-        s.add_point((radius + dr) * std::cos(angle), (radius + dr) * std::sin(angle), dz);
+        section[std::size_t(corner++)] = {(radius + dr) * std::cos(angle), (radius + dr) * std::sin(angle), dz};
     }
-    const auto at = [&](int section, int corner) { return base + std::size_t(4 * (section - first) + corner % 4); };
-    for(int i = first; i < last; ++i)
-      for(int k = 0; k < 4; ++k)
-        s.add_quad(at(i, k), at(i + 1, k), at(i + 1, k + 1), at(i, k + 1));
-    s.add_quad(at(first, 0), at(first, 1), at(first, 2), at(first, 3));
-    s.add_quad(at(last, 3), at(last, 2), at(last, 1), at(last, 0));
+    add_capped_tube(s, tube);
   };
   if(pieces == 1)
     add_tube(0, sections);
@@ -140,10 +157,10 @@ Mesh coiled_tube(int pieces)
 // radius 0.6 and comes back forward under the body, its tip 0.03 short of the back of the
 // hind leg: within a voxel, so that the solid joins them and the skeleton has a cycle
 // through the tail, the leg and the body. The tail is a piece of its own, as artists
-// model one.
+// model one. Every coordinate is multiplied by `scale`.
 const std::array<double, 3> tail_root{0.0, 0.5, 1.5}, tail_tip{0.17, 0.5, 0.3};
 
-Mesh body_with_a_tail_resting_on_a_leg()
+Mesh body_with_a_tail_resting_on_a_leg(double scale = 1)
 {
   test::Soup s = test::box(0, 0, 1, 4, 1, 2);
   test::append(s, test::box(0.2, 0.2, -1, 0.8, 0.8, 1.05));
@@ -159,24 +176,23 @@ Mesh body_with_a_tail_resting_on_a_leg()
   for(int i = 1; i <= 4; ++i)
     path.push_back({tail_tip[0] * i / 4, 0.5, 0.3});
   const double half_width = 0.03;
-  const std::size_t base = s.points.size();
+  std::vector<Tube_section> tail;
   for(std::size_t i = 0; i < path.size(); ++i)
   {
     const auto& before = path[i == 0 ? 0 : i - 1];
     const auto& after = path[std::min(i + 1, path.size() - 1)];
     const double tx = after[0] - before[0], tz = after[2] - before[2], length = std::hypot(tx, tz);
     const double nx = -tz / length, nz = tx / length; // normal to the path in its plane
+    Tube_section& section = tail.emplace_back();
+    int corner = 0;
     for(const auto& [dn, dy] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}})
-      s.add_point(path[i][0] + half_width * dn * nx, path[i][1] + half_width * dy,
-                  path[i][2] + half_width * dn * nz);
+      section[std::size_t(corner++)] = {path[i][0] + half_width * dn * nx, path[i][1] + half_width * dy,
+                                        path[i][2] + half_width * dn * nz};
   }
-  const auto at = [&](std::size_t section, int corner) { return base + 4 * section + std::size_t(corner % 4); };
-  for(std::size_t i = 0; i + 1 < path.size(); ++i)
-    for(int k = 0; k < 4; ++k)
-      s.add_quad(at(i, k), at(i + 1, k), at(i + 1, k + 1), at(i, k + 1));
-  const std::size_t last = path.size() - 1;
-  s.add_quad(at(0, 0), at(0, 1), at(0, 2), at(0, 3));
-  s.add_quad(at(last, 3), at(last, 2), at(last, 1), at(last, 0));
+  add_capped_tube(s, tail);
+  for(auto& p : s.points)
+    for(double& c : p)
+      c *= scale;
   const Mesh mesh = test::mesh_of<Mesh>(s);
   BOOST_TEST_REQUIRE(CGAL::is_closed(mesh));
   return mesh;
@@ -335,6 +351,34 @@ BOOST_AUTO_TEST_CASE(a_thin_tail_resting_on_a_leg_stays_hung_from_its_root)
                    "removed voxel at " << c[0] << " " << c[1] << " " << c[2] << " is nearer the tail's root");
       });
       BOOST_TEST(removed > 0u);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(where_the_tail_is_cut_does_not_depend_on_the_model_s_scale)
+{
+  // The distances along the surface are measured in voxels, so that their sums neither
+  // overflow nor vanish: at the ends of the range of scales the package takes, the cut
+  // removes the same voxels (in world units, single-precision lengths would be infinite at
+  // 1e120 and zero at 1e-120, and every voxel would tie).
+  const auto removed_voxels = [](double scale) {
+    const Mesh mesh = body_with_a_tail_resting_on_a_leg(scale);
+    test::Voxel_pipeline<Mesh, gs::Sparse_voxel_set> p(mesh, 64);
+    const auto thinned = p.voxels;
+    gs::cut_spurious_cycles(p.voxels, mesh);
+    std::vector<gs::Voxel_key> removed;
+    thinned.for_each([&](const gs::Voxel_key& k) {
+      if(!p.voxels.contains(k))
+        removed.push_back(k);
+    });
+    std::sort(removed.begin(), removed.end());
+    return removed;
+  };
+  const std::vector<gs::Voxel_key> at_unit_scale = removed_voxels(1);
+  BOOST_TEST_REQUIRE(!at_unit_scale.empty());
+  for(double scale : {1e120, 1e-120})
+    BOOST_TEST_CONTEXT("scale " << scale)
+    {
+      BOOST_TEST((removed_voxels(scale) == at_unit_scale));
     }
 }
 

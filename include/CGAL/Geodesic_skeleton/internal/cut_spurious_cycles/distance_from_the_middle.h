@@ -7,6 +7,8 @@
 // How far along the surface of the mesh points lie from the middle of the model, for the
 // order of cut_spurious_cycles()' removals: not part of the API.
 
+#include <CGAL/Geodesic_skeleton/Voxel_frame.h>
+#include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/internal/geodesics/vertex_components.h>
 #include <CGAL/Geodesic_skeleton/internal/vec3.h>
 
@@ -178,28 +180,31 @@ inline std::vector<std::size_t> nearest_vertices(const std::vector<Vec3>& point,
   return nearest;
 }
 
-// How far along the surface points lie from the middle of the model: the length of the
-// shortest path along the mesh's edges to the vertex nearest the point from the vertex of
-// its connected component nearest the surface's centroid. A part that hangs from a body (a
-// limb, a tail) lies farther the nearer its tip a point is, also when the part is a piece
-// of its own. `components`: the mesh's vertex_components().
+// How far along the surface voxels lie from the middle of the model: the length of the
+// shortest path along the mesh's edges to the vertex nearest the voxel's centre from the
+// vertex of its connected component nearest the surface's centroid. A part that hangs from
+// a body (a limb, a tail) lies farther the nearer its tip a voxel is, also when the part is
+// a piece of its own. Everything is measured in the grid coordinates of `frame` (voxels),
+// so that neither the centroid's sums nor the single-precision lengths overflow or vanish,
+// whatever the mesh's scale. `components`: the mesh's vertex_components().
 //
 // Complexity: O(F + E) to build, for F face corners and E edges, in practice (one run of
-// shortest_path_lengths()), and O(V Q) for Q points asked (their nearest vertices, by brute
-// force: the points are the few voxels a cut chooses among).
+// shortest_path_lengths()), and O(V Q) for Q voxels asked (their nearest vertices, by brute
+// force: the voxels are the few a cut chooses among).
 class Surface_distance_from_the_middle
 {
 public:
   template <typename FaceGraph, typename VertexPointMap>
-  Surface_distance_from_the_middle(const FaceGraph& mesh, VertexPointMap vpm, const Vertex_components& components)
+  Surface_distance_from_the_middle(const FaceGraph& mesh, VertexPointMap vpm, const Vertex_components& components,
+                                   const Voxel_frame& frame)
   {
     const auto vim = CGAL::get_initialized_vertex_index_map(mesh);
     m_point.resize(static_cast<std::size_t>(num_vertices(mesh)));
     for(auto v : vertices(mesh))
     {
       const auto& p = get(vpm, v);
-      m_point[static_cast<std::size_t>(get(vim, v))] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()),
-                                                         CGAL::to_double(p.z())};
+      m_point[static_cast<std::size_t>(get(vim, v))] =
+          frame.to_grid({CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
     }
     if(m_point.empty())
       return;
@@ -208,21 +213,23 @@ public:
         nearest_vertex_per_component(mesh, vim, m_point, components, surface_centroid(mesh, vim, m_point)));
   }
 
-  // The distance of each of `points` (world coordinates); infinity for a mesh without
-  // vertices.
-  std::vector<double> operator()(const std::vector<Vec3>& points) const
+  // The distance of each of `voxels`, in voxels; infinity for a mesh without vertices.
+  std::vector<double> operator()(const std::vector<Voxel_key>& voxels) const
   {
     if(m_point.empty())
-      return std::vector<double>(points.size(), std::numeric_limits<double>::infinity());
+      return std::vector<double>(voxels.size(), std::numeric_limits<double>::infinity());
+    std::vector<Vec3> centres;
+    for(const Voxel_key& k : voxels)
+      centres.push_back({k.x + 0.5, k.y + 0.5, k.z + 0.5});
     std::vector<double> distance;
-    for(std::size_t i : nearest_vertices(m_point, points))
+    for(std::size_t i : nearest_vertices(m_point, centres))
       distance.push_back(m_distance[i]);
     return distance;
   }
 
 private:
-  std::vector<Vec3> m_point;     // by vertex index
-  std::vector<float> m_distance; // by vertex index
+  std::vector<Vec3> m_point;     // by vertex index, in grid coordinates
+  std::vector<float> m_distance; // by vertex index, in voxels
 };
 
 } // namespace internal

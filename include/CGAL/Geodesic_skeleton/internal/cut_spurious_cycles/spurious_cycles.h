@@ -365,15 +365,15 @@ inline Cut_trials cut_trials(const Skeleton_adjacency& graph, const Cycle_steps&
   for(std::size_t v = 0; v < graph.nodes.size(); ++v)
     if(leaving_steps[v] > 0)
       singles.push_back(v);
+  const auto centre_outside = [&](std::size_t v) { return leaving_steps[v] == steps_on_cycles[v]; };
   std::stable_sort(singles.begin(), singles.end(), [&](std::size_t a, std::size_t b) {
-    const bool a_out = leaving_steps[a] == steps_on_cycles[a], b_out = leaving_steps[b] == steps_on_cycles[b];
-    return a_out != b_out ? a_out : leaving_steps[a] > leaving_steps[b];
+    return centre_outside(a) != centre_outside(b) ? centre_outside(a) : leaving_steps[a] > leaving_steps[b];
   });
   Cut_trials result;
   std::vector<std::vector<std::size_t>>& trials = result.trials;
   for(std::size_t v : singles)
   {
-    result.centre_outside += leaving_steps[v] == steps_on_cycles[v];
+    result.centre_outside += centre_outside(v);
     trials.push_back({v});
   }
   result.singles = trials.size();

@@ -259,11 +259,8 @@ std::size_t cut_spurious_cycles_impl(VoxelSet& skeleton, const FaceGraph& mesh, 
   std::optional<Surface_distance_from_the_middle> from_the_middle; // built when a pass first cuts
   const auto distances_from_the_middle = [&](const std::vector<Voxel_key>& voxels) {
     if(!from_the_middle)
-      from_the_middle.emplace(mesh, mesh_lines.vertex_point_map(), mesh_lines.vertex_components());
-    std::vector<Vec3> centres;
-    for(const Voxel_key& k : voxels)
-      centres.push_back(skeleton.frame().centre(k));
-    return (*from_the_middle)(centres);
+      from_the_middle.emplace(mesh, mesh_lines.vertex_point_map(), mesh_lines.vertex_components(), skeleton.frame());
+    return (*from_the_middle)(voxels);
   };
   std::size_t cycles = initial_cycles;
   while(cycles > handles)
