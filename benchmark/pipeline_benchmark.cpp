@@ -32,13 +32,16 @@
 #include "benchmark_common.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gs = CGAL::Geodesic_skeleton;
@@ -136,7 +139,17 @@ Pruning_counts pruning_counts(const Mesh& mesh, int resolution)
   c.regions = report_1.branched_regions;
   c.algorithm_1_branched = gs::count_skeleton_points(algorithm_1).branched_connection;
 
-  c.pruning = gs::prune_skeleton(skeleton, radius);
+  // Above the level of detail's resolution, the end points of the skeleton there.
+  std::optional<std::vector<std::array<double, 3>>> coarse_ends;
+  if(resolution > gs::default_voxel_resolution)
+    coarse_ends = gs::coarse_skeleton_end_points(mesh, gs::default_voxel_resolution, solid.frame());
+  c.pruning = coarse_ends ? gs::prune_skeleton(
+                                skeleton, gs::parameters::combine(
+                                              radius, gs::parameters::coarse_end_points(&std::as_const(*coarse_ends)),
+                                              gs::parameters::coarse_end_point_tolerance(
+                                                  gs::parameter_ranges::coarse_end_point_tolerance.default_value *
+                                                  resolution / gs::default_voxel_resolution)))
+                          : gs::prune_skeleton(skeleton, radius);
   c.branched_after = gs::count_skeleton_points(skeleton).branched_connection;
   c.pruned = skeleton.size();
   return c;
@@ -182,7 +195,7 @@ int main(int argc, char* argv[])
   bool all_agree = true;
   // Where our time goes: the median over the timed runs of each stage's time.
   const std::vector<std::string> stages = {"voxelize", "distance_transform", "thin", "thinned_graph",
-                                           "remove_small_pieces", "cut_spurious_cycles", "prune", "to_graph",
+                                           "remove_small_pieces", "cut_spurious_cycles", "level_of_detail", "prune", "to_graph",
                                            "smooth", "curve_points_inside", "split_into_bones"};
   std::ostringstream stage_table;
   stage_table << "\n| mesh |";

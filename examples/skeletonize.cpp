@@ -74,6 +74,7 @@ struct Options
   double small_piece_fraction = ranges::small_piece_fraction.default_value;
   double spur_length_factor = ranges::spur_length_factor.default_value;
   double limb_protrusion_factor = ranges::limb_protrusion_factor.default_value;
+  int level_of_detail_resolution = int(ranges::level_of_detail_resolution.default_value);
   std::optional<int> smoothing_window; // none: the library's default for the resolution
   std::optional<double> thin_part_radius; // none: the library's default for the resolution
   double bend_threshold = ranges::bend_threshold.default_value;
@@ -112,6 +113,8 @@ const Numeric_option numeric_options[] = {
     {"--spur-length", "F", ranges::spur_length_factor, "snip end branches shorter than F MAT radii"},
     {"--limb-protrusion", "F", ranges::limb_protrusion_factor,
      "level of detail: snip end branches reaching less than F largest MAT radii out of their junction"},
+    {"--level-of-detail-resolution", "N", ranges::level_of_detail_resolution,
+     "level of detail: a finer grid keeps no more end points than the skeleton at N has (0: off)"},
     {"--smoothing-window", "W", ranges::smoothing_window, "points averaged along branches",
      "5 at resolution 64, scaled with it: 9 at 128"},
     {"--bend-threshold", "T", ranges::bend_threshold, "chord-to-point accumulation that makes a joint"},
@@ -253,6 +256,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--thin-part-radius") o.thin_part_radius = parse_number<double>(a, value());
     else if(a == "--spur-length") o.spur_length_factor = parse_number<double>(a, value());
     else if(a == "--limb-protrusion") o.limb_protrusion_factor = parse_number<double>(a, value());
+    else if(a == "--level-of-detail-resolution") o.level_of_detail_resolution = parse_number<int>(a, value());
     else if(a == "--smoothing-window") o.smoothing_window = parse_number<int>(a, value());
     else if(a == "--bend-threshold") o.bend_threshold = parse_number<double>(a, value());
     else if(a == "--straightness") o.straightness_tolerance = parse_number<double>(a, value());
@@ -524,6 +528,7 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
         params::thin_part_radius(o.thin_part_radius.value_or(gs::default_thin_part_radius(o.resolution))),
         params::spur_length_factor(o.spur_length_factor),
         params::limb_protrusion_factor(o.limb_protrusion_factor),
+        params::level_of_detail_resolution(o.level_of_detail_resolution),
         params::smoothing_window(o.smoothing_window.value_or(gs::default_smoothing_window(o.resolution))),
         params::bend_threshold(o.bend_threshold), params::straightness_tolerance(o.straightness_tolerance),
         params::minimum_bone_length_factor(o.minimum_bone_length_factor),
@@ -596,6 +601,7 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
                         {"thin_part_radius", report.thin_part_radius},
                         {"spur_length_factor", o.spur_length_factor},
                         {"limb_protrusion_factor", o.limb_protrusion_factor},
+                        {"level_of_detail_resolution", o.level_of_detail_resolution},
                         {"smoothing_window", report.smoothing_window},
                         {"bend_threshold", o.bend_threshold},
                         {"straightness_tolerance", o.straightness_tolerance},

@@ -88,10 +88,12 @@ BOOST_AUTO_TEST_CASE(the_default_smallest_radius_acts_only_on_finer_grids)
   // mushroom.off at 128 has parts thinner than half a voxel of 64 that are not sheets (a
   // sheet's chain is measured in its width: fold.off, a folded sheet, no longer shows it).
   // The floor on bones in the piece's largest radius is set aside: it alone would keep
-  // those parts' joints few.
+  // those parts' joints few; so is the level of detail of the default grid, which snips the
+  // branches of some of them.
   const Mesh mushroom = test::demo_mesh<Mesh>("mushroom.off");
   const auto at_128 = gs::parameters::combine(gs::parameters::resolution(128),
-                                              gs::parameters::minimum_bone_length_of_piece_factor(0.));
+                                              gs::parameters::minimum_bone_length_of_piece_factor(0.),
+                                              gs::parameters::level_of_detail_resolution(0));
   gs::extract_control_skeleton(mushroom, floored, at_128);
   gs::extract_control_skeleton(mushroom, unfloored, gs::parameters::combine(at_128, gs::parameters::smallest_radius(0.)));
   BOOST_TEST(num_vertices(floored) < num_vertices(unfloored));
@@ -183,6 +185,39 @@ BOOST_AUTO_TEST_CASE(a_rig_keeps_its_size_when_the_resolution_doubles)
       BOOST_TEST(ratio <= 1.25);
     }
   }
+}
+
+// The end of a block has four corners: at 64 thinning merges them into two branches, at 128
+// all four come out, each reaching out of the junction's ball as far as the two did. With
+// the level of detail of the default grid, resolution 128 keeps as many end points as 64.
+BOOST_AUTO_TEST_CASE(a_finer_grid_keeps_the_end_points_of_the_default_one)
+{
+  for(const char* name : {"handle.off", "dragknob.off"})
+  {
+    BOOST_TEST_CONTEXT(name)
+    {
+      const Mesh mesh = test::demo_mesh<Mesh>(name);
+      Control at_64, at_128, every_branch_at_128;
+      const gs::Control_skeleton_report coarse = gs::extract_control_skeleton(mesh, at_64);
+      const gs::Control_skeleton_report fine =
+          gs::extract_control_skeleton(mesh, at_128, gs::parameters::resolution(128));
+      gs::extract_control_skeleton(mesh, every_branch_at_128,
+                                   gs::parameters::combine(gs::parameters::resolution(128),
+                                                           gs::parameters::level_of_detail_resolution(0)));
+      const std::size_t ends_at_64 = joints_of_kind(at_64, gs::Joint_kind::end);
+      BOOST_TEST(joints_of_kind(at_128, gs::Joint_kind::end) == ends_at_64);
+      BOOST_TEST(joints_of_kind(every_branch_at_128, gs::Joint_kind::end) > ends_at_64);
+      BOOST_TEST(coarse.pruning.snipped_beyond_coarse_detail == 0u);
+      BOOST_TEST(fine.pruning.snipped_beyond_coarse_detail >= 1u);
+      BOOST_TEST(fine.level_of_detail_resolution == 64);
+    }
+  }
+  const Mesh cow = test::demo_mesh<Mesh>("cow.off");
+  Control c;
+  BOOST_CHECK_THROW(gs::extract_control_skeleton(cow, c, gs::parameters::level_of_detail_resolution(-1)),
+                    std::invalid_argument);
+  BOOST_CHECK_THROW(gs::extract_control_skeleton(cow, c, gs::parameters::level_of_detail_resolution(9000)),
+                    std::invalid_argument);
 }
 
 // The elephant's ears are thin flaps: thinning leaves a bush of rim branches in each, which
@@ -482,7 +517,7 @@ BOOST_AUTO_TEST_CASE(the_report_and_the_visitor_see_every_stage)
   };
   const std::vector<std::string> documented = {
       "voxelize", "distance_transform", "thin",   "thinned_graph",       "remove_small_pieces", "cut_spurious_cycles",
-      "prune",    "to_graph",           "smooth", "curve_points_inside", "split_into_bones",    "reeb_graph"};
+      "level_of_detail", "prune", "to_graph", "smooth", "curve_points_inside", "split_into_bones", "reeb_graph"};
   std::vector<std::string> stages;
   gs::Curve_skeleton<Point, boost::graph_traits<Mesh>::vertex_descriptor> curve;
   gs::Reeb_graph<Mesh> reeb;

@@ -24,6 +24,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <set>
 #include <unordered_map>
@@ -443,6 +444,57 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(a_plain_path_is_never_snipped, VoxelSet, Voxel_set
   BOOST_TEST(skeleton.size() == 4u);
 }
 
+// The coarse end points of thick_junction_with_three_arms() at the tips of its arms, in grid
+// coordinates (voxel centres), as a coarser grid would see them.
+const std::array<double, 3> tip_of_plus_x_arm{8.5, 0.5, 0.5}, tip_of_minus_x_arm{-7.5, 0.5, 0.5},
+    tip_of_plus_y_arm{0.5, 8.5, 0.5};
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(an_end_branch_that_a_coarser_skeleton_has_not_is_snipped, VoxelSet, Voxel_set_models)
+{
+  // Radius 3: each arm (8 voxels out of the cluster) reaches out more than the level of
+  // detail and is longer than the spur length, so it stays on its own, but not 3 times so.
+  const auto radius = CGAL::Constant_property_map<Voxel_key, double>(3.0);
+  auto pruned_with = [&](const std::vector<std::array<double, 3>>* coarse, double tolerance) {
+    VoxelSet skeleton = voxel_set<VoxelSet>(thick_junction_with_three_arms());
+    const gs::Pruning_report report = gs::prune_skeleton(
+        skeleton, gs::parameters::combine(gs::parameters::mat_radius_map(radius),
+                                          gs::parameters::coarse_end_points(coarse),
+                                          gs::parameters::coarse_end_point_tolerance(tolerance)));
+    return std::make_pair(contents(skeleton), report);
+  };
+  const Voxel_key end_of_plus_y_arm{0, 8, 0};
+
+  // Without a coarser skeleton, the three arms stay.
+  const auto [alone, alone_report] = pruned_with(nullptr, 4.0);
+  BOOST_TEST(alone.count(end_of_plus_y_arm) == 1u);
+  BOOST_TEST(alone_report.snipped_beyond_coarse_detail == 0u);
+
+  // The coarser skeleton has the two x arms: the y arm, whose tip is 8 voxels from both, goes.
+  const std::vector<std::array<double, 3>> two_ends{tip_of_plus_x_arm, tip_of_minus_x_arm};
+  const auto [guided, guided_report] = pruned_with(&two_ends, 4.0);
+  BOOST_TEST(guided.count(end_of_plus_y_arm) == 0u);
+  BOOST_TEST(guided.count(Voxel_key{8, 0, 0}) == 1u);
+  BOOST_TEST(guided.count(Voxel_key{-8, 0, 0}) == 1u);
+  BOOST_TEST(guided_report.snipped_beyond_coarse_detail == 1u);
+  BOOST_TEST(components_of(guided) == 1u);
+
+  // A tolerance that takes in the +x arm's coarse end point (11.3 voxels away) keeps it.
+  BOOST_TEST(pruned_with(&two_ends, 12.0).first.count(end_of_plus_y_arm) == 1u);
+
+  // As many coarse end points as ends: nothing more is snipped, even where none matches.
+  const std::vector<std::array<double, 3>> three_elsewhere{{0.5, -9.5, 0.5}, {0.5, 0.5, 9.5}, {0.5, 0.5, -9.5}};
+  const auto [as_many, as_many_report] = pruned_with(&three_elsewhere, 4.0);
+  BOOST_TEST(as_many.size() == alone.size());
+  BOOST_TEST(as_many_report.snipped_beyond_coarse_detail == 0u);
+
+  // One coarse end point: the skeleton still goes on past its junction, so two arms stay.
+  const std::vector<std::array<double, 3>> one_end{tip_of_plus_x_arm};
+  const auto [one, one_report] = pruned_with(&one_end, 4.0);
+  BOOST_TEST(one.count(Voxel_key{8, 0, 0}) == 1u);
+  BOOST_TEST(one_report.snipped_beyond_coarse_detail == 1u);
+  BOOST_TEST(components_of(one) == 1u);
+}
+
 BOOST_AUTO_TEST_CASE(absurd_parameters_give_clear_exceptions)
 {
   gs::Sparse_voxel_set skeleton = voxel_set<gs::Sparse_voxel_set>(thick_junction_with_three_arms());
@@ -451,6 +503,10 @@ BOOST_AUTO_TEST_CASE(absurd_parameters_give_clear_exceptions)
                     std::invalid_argument);
   BOOST_CHECK_THROW(gs::prune_skeleton(skeleton, gs::parameters::limb_protrusion_factor(-0.5)), std::invalid_argument);
   BOOST_CHECK_THROW(gs::prune_skeleton(skeleton, gs::parameters::limb_protrusion_factor(std::nan(""))),
+                    std::invalid_argument);
+  BOOST_CHECK_THROW(gs::prune_skeleton(skeleton, gs::parameters::coarse_end_point_tolerance(-1.0)),
+                    std::invalid_argument);
+  BOOST_CHECK_THROW(gs::prune_skeleton(skeleton, gs::parameters::coarse_end_point_tolerance(std::nan(""))),
                     std::invalid_argument);
   BOOST_CHECK_THROW(gs::prune_skeleton(skeleton, gs::parameters::mat_radius_map(
                                                      CGAL::Constant_property_map<Voxel_key, double>(-2.0))),

@@ -14,6 +14,7 @@
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
 #include <CGAL/Geodesic_skeleton/Voxelized_surface.h>
 #include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>
+#include <CGAL/Geodesic_skeleton/coarse_skeleton_end_points.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/geodesic_mapping_function.h>
 #include <CGAL/Geodesic_skeleton/move_skeleton_inside.h>
@@ -63,11 +64,13 @@ struct Control_skeleton_report
   double smallest_radius = 0;      ///< the `smallest_radius` the split used, given or default (world units)
   double thin_part_radius = 0;     ///< the `thin_part_radius` the thinning used, given or default (voxels)
   int smoothing_window = 0;        ///< the `smoothing_window` the smoothing used, given or default (points)
+  int level_of_detail_resolution = 0; ///< the `level_of_detail_resolution` the pruning used, given or default
   std::size_t reeb_nodes = 0;      ///< nodes of the Reeb graph, when one was asked for
   std::size_t reeb_edges = 0;      ///< arcs of the Reeb graph, when one was asked for
   /// Wall-clock time of each stage in milliseconds, in the order they ran: "voxelize",
   /// "distance_transform", "thin", "thinned_graph" (the graph and counts of the thinned
-  /// skeleton), "remove_small_pieces", "cut_spurious_cycles", "prune", "to_graph", "smooth",
+  /// skeleton), "remove_small_pieces", "cut_spurious_cycles", "level_of_detail" (the skeleton
+  /// at `level_of_detail_resolution`, when finer), "prune", "to_graph", "smooth",
   /// "curve_points_inside", "split_into_bones", and "reeb_graph" when asked for.
   std::vector<std::pair<std::string, double>> timings_ms;
   double total_ms = 0;             ///< the whole call, in milliseconds
@@ -154,6 +157,10 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
                                      static_cast<int>(ranges::smoothing_window.default_value)),
                     caller);
   bone_splitting_settings(np, caller);
+  checked_parameter(ranges::level_of_detail_resolution,
+                    choose_parameter(get_parameter(np, internal_np::level_of_detail_resolution_tag),
+                                     default_voxel_resolution),
+                    caller);
   checked_parameter(ranges::number_of_reeb_intervals,
                     choose_parameter(get_parameter(np, internal_np::number_of_reeb_intervals_tag),
                                      static_cast<std::size_t>(ranges::number_of_reeb_intervals.default_value)),
@@ -187,6 +194,14 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 /// remaining skeleton, so the result has one tree per body; then `cut_spurious_cycles()`
 /// opens the cycles of the skeleton that the mesh has no handle for (where parts come
 /// within a voxel of each other, the solid joins them).
+///
+/// At a resolution finer than `level_of_detail_resolution` (default: the default
+/// resolution, 64), `coarse_skeleton_end_points()` first runs the same voxel stages at that
+/// resolution, up to `prune_skeleton()`, and the end points of that skeleton's graph are
+/// given to the finer `prune_skeleton()` (its `coarse_end_points`, with a tolerance of 4
+/// voxels of the coarser grid; none when the mesh encloses no volume there): the finer skeleton then keeps no more end points than the coarser one
+/// has, where its extra end branches are detail under 3 times the level of detail (the
+/// resolution is a sampling choice; which branches the rig has should not depend on it).
 ///
 /// Between `smooth_skeleton()` and `split_into_bones()`, `move_skeleton_inside()`: when the
 /// mesh is a closed triangle mesh, a point of the curve skeleton that lies outside it
@@ -246,6 +261,14 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 ///     \cgalParamDescription{the setting of `prune_skeleton()`: the rig's level of detail}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{0.75}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{level_of_detail_resolution}
+///     \cgalParamDescription{the resolution whose skeleton's end points decide how many end
+///                           points a finer skeleton keeps (`prune_skeleton()`'s
+///                           `coarse_end_points`), an integer in [0, 8192]; 0, or a value not
+///                           below `resolution`, turns this off}
+///     \cgalParamType{`int`}
+///     \cgalParamDefault{64, the default resolution}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{smoothing_window}
 ///     \cgalParamDescription{the setting of `smooth_skeleton()`: the number of consecutive
@@ -315,7 +338,9 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 /// \throws std::length_error when the voxel grid would need more than `memory_limit`.
 ///
 /// \b Complexity: linear in the number of voxels of the grid and the faces and vertices
-/// of the mesh, in practice (see each stage); the Reeb graph adds O((V + E) log V).
+/// of the mesh, in practice (see each stage); the Reeb graph adds O((V + E) log V). Above
+/// `level_of_detail_resolution`, the voxel stages at that resolution add their cost, a
+/// fraction (that resolution over the resolution, cubed) of the voxel work.
 template <typename FaceGraph, typename Point,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_skeleton<Point>& out,
@@ -377,9 +402,26 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   report.spurious_cycles_cut = cut_spurious_cycles(skeleton, mesh, with_surface);
   clock.finished("cut_spurious_cycles");
 
-  report.pruning =
-      prune_skeleton(skeleton, parameters::combine(parameters::mat_radius_map(mat_radius_in_voxels_map(distances)),
-                                                   parameters::sheet_radius_map(sheet_radius_in_voxels_map(sheet_radii)), np));
+  // The end branches that a finer grid resolves beyond the level of detail of the default
+  // one are snipped as long as the skeleton has more end points than it has there.
+  report.level_of_detail_resolution = choose_parameter(get_parameter(np, internal_np::level_of_detail_resolution_tag),
+                                                       default_voxel_resolution);
+  std::optional<std::vector<std::array<double, 3>>> coarse_ends;
+  if(report.level_of_detail_resolution > 0 && report.level_of_detail_resolution < report.resolution)
+    coarse_ends = coarse_skeleton_end_points(mesh, report.level_of_detail_resolution, solid.frame(), np);
+  clock.finished("level_of_detail");
+
+  const auto radii_np = parameters::combine(parameters::mat_radius_map(mat_radius_in_voxels_map(distances)),
+                                            parameters::sheet_radius_map(sheet_radius_in_voxels_map(sheet_radii)));
+  if(coarse_ends)
+    report.pruning = prune_skeleton(
+        skeleton, parameters::combine(radii_np, parameters::coarse_end_points(&std::as_const(*coarse_ends)),
+                                      parameters::coarse_end_point_tolerance(
+                                          parameter_ranges::coarse_end_point_tolerance.default_value *
+                                          double(report.resolution) / double(report.level_of_detail_resolution)),
+                                      np));
+  else
+    report.pruning = prune_skeleton(skeleton, parameters::combine(radii_np, np));
   clock.finished("prune");
 
   Skeleton curve;

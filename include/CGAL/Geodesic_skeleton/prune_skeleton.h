@@ -17,8 +17,10 @@
 
 #include <CGAL/property_map.h>
 
+#include <array>
 #include <cmath>
 #include <cstddef>
+#include <vector>
 #include <stdexcept>
 #include <string>
 
@@ -34,6 +36,8 @@ struct Pruning_report
   std::size_t snipped_branches = 0;          ///< spurious end branches snipped
   std::size_t snipped_points = 0;            ///< voxels of those branches
   std::size_t rounds = 0;                    ///< rounds of pruning and snipping that changed something
+  /// end branches snipped because a coarser skeleton does not have them (`coarse_end_points`)
+  std::size_t snipped_beyond_coarse_detail = 0;
 };
 
 /// \ingroup PkgGeodesicSkeletonRef
@@ -55,7 +59,15 @@ struct Pruning_report
 /// parallel teeth, one stays). An end branch is traced through any lump of branched points
 /// that only two branches leave. When the voxels show no spur left, the same tests run on the
 /// end branches of the skeleton's graph as `to_graph()` makes it, which also has ends that
-/// voxel degrees hide (a voxel hanging on a lump, a tip that is a little triangle). Both
+/// voxel degrees hide (a voxel hanging on a lump, a tip that is a little triangle).
+///
+/// Given `coarse_end_points`, the end points of the skeleton of the same shape on a coarser
+/// grid, pruning then goes on while the skeleton's graph has more end points than those:
+/// an end branch whose tip is farther than `coarse_end_point_tolerance` from every coarse
+/// end point, detail that the finer grid resolves and the coarser one does not (the
+/// corners of a block, which a coarser grid merges into fewer branches), is judged with
+/// both thresholds 3 times larger (`unmatched_threshold_factor`), and each one snipped so
+/// counts against the surplus of end points. Both
 /// thresholds are ratios of lengths of the shape, so that the same features are kept at
 /// every resolution that resolves them. The radius that judges a voxel is its MAT radius,
 /// or its sheet radius where that is larger (in a thin sheet, the sheet's half width); the
@@ -110,18 +122,37 @@ struct Pruning_report
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{0.75}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{coarse_end_points}
+///     \cgalParamDescription{the end points of the pruned skeleton of the same shape on a
+///                           coarser grid (the vertices of degree 1 of its graph), in the grid
+///                           coordinates of `skeleton`'s voxels (voxel `k` covers
+///                           [k, k + 1) along each axis): the level of detail to keep
+///                           (package parameter; `extract_control_skeleton()` gives those at
+///                           its `level_of_detail_resolution`)}
+///     \cgalParamType{`const std::vector<std::array<double, 3>>*`}
+///     \cgalParamDefault{`nullptr`: no coarser skeleton}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{coarse_end_point_tolerance}
+///     \cgalParamDescription{how near the tip of an end branch, in voxels of `skeleton`, a
+///                           coarse end point must be for the coarser grid to have the branch,
+///                           in [0, 1e6] (package parameter)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{4}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \returns what was removed, and how many rounds of snipping were made.
-/// \throws std::invalid_argument when `spur_length_factor` or `limb_protrusion_factor` is
-///         out of range or a radius or sheet radius is negative or not finite.
+/// \throws std::invalid_argument when `spur_length_factor`, `limb_protrusion_factor` or
+///         `coarse_end_point_tolerance` is out of range or a radius or sheet radius is negative or not finite.
 ///
 /// \b Complexity: O(N log N + V M) for N skeleton voxels per round of snipping (one Dijkstra
 /// per region, over the region; each end branch traced once), where the protrusions of the
 /// end branches read V voxels (from the tip inwards, until the branch is known to stay) and
 /// each compares M balls, those whose centre is within the largest MAT radius of it along
 /// the third axis (O(N) at worst; a small part of the skeleton in practice); a few rounds
-/// in practice; O(N) extra memory.
+/// in practice; O(N) extra memory. With `coarse_end_points` (C of them), the rounds run once
+/// more and the tip of each end branch is compared with each coarse end point: O(E C) more
+/// per round for E end branches.
 template <typename VoxelSet, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Pruning_report prune_skeleton(VoxelSet& skeleton,
                               const NamedParameters& np = CGAL::parameters::default_values())
@@ -138,6 +169,11 @@ Pruning_report prune_skeleton(VoxelSet& skeleton,
       parameter_ranges::limb_protrusion_factor,
       choose_parameter(get_parameter(np, internal_np::limb_protrusion_factor_tag),
                        parameter_ranges::limb_protrusion_factor.default_value),
+      "prune_skeleton");
+  const double tolerance = internal::checked_parameter(
+      parameter_ranges::coarse_end_point_tolerance,
+      choose_parameter(get_parameter(np, internal_np::coarse_end_point_tolerance_tag),
+                       parameter_ranges::coarse_end_point_tolerance.default_value),
       "prune_skeleton");
   const auto mat_radius_map = choose_parameter(get_parameter(np, internal_np::mat_radius_map_tag),
                                                CGAL::Constant_property_map<Voxel_key, double>(1.0));
@@ -164,24 +200,47 @@ Pruning_report prune_skeleton(VoxelSet& skeleton,
   if(protrusion_factor > 0)
     thresholds.largest_radius_of_piece = internal::largest_radius_of_pieces(skeleton, radius);
   Pruning_report report;
-  for(bool first = true;; first = false)
-  {
-    const internal::Branched_region_pruning pruned = internal::prune_branched_regions(skeleton, radius);
-    if(first)
-      report.branched_regions = pruned.regions;
-    report.removed_branched_points += pruned.removed_points;
-    internal::Snipping snipped;
-    if(factor > 0 || protrusion_factor > 0)
+  auto prune_until_nothing_changes = [&](bool first_pass) {
+    for(bool first = first_pass;; first = false)
     {
-      snipped = internal::snip_spurious_branches_once(skeleton, radii, thresholds);
-      if(snipped.branches == 0) // what is left that the graph, not the voxels, shows as ends
-        snipped = internal::snip_spurious_graph_branches_once(skeleton, radii, thresholds);
+      const internal::Branched_region_pruning pruned = internal::prune_branched_regions(skeleton, radius);
+      if(first)
+        report.branched_regions = pruned.regions;
+      report.removed_branched_points += pruned.removed_points;
+      internal::Snipping snipped;
+      if(factor > 0 || protrusion_factor > 0)
+      {
+        snipped = internal::snip_spurious_branches_once(skeleton, radii, thresholds);
+        if(snipped.branches == 0) // what is left that the graph, not the voxels, shows as ends
+          snipped = internal::snip_spurious_graph_branches_once(skeleton, radii, thresholds);
+      }
+      report.snipped_branches += snipped.branches;
+      report.snipped_points += snipped.points;
+      if(pruned.removed_points == 0 && snipped.branches == 0)
+        break;
+      ++report.rounds;
     }
-    report.snipped_branches += snipped.branches;
-    report.snipped_points += snipped.points;
-    if(pruned.removed_points == 0 && snipped.branches == 0)
-      break;
-    ++report.rounds;
+  };
+  prune_until_nothing_changes(true);
+
+  // Then, given the end points of a coarser skeleton of the same shape, the end branches
+  // that it does not have are judged with larger thresholds, until the skeleton has no
+  // more end points than it.
+  const std::vector<std::array<double, 3>>* coarse_points =
+      choose_parameter(get_parameter(np, internal_np::coarse_end_points_tag),
+                       static_cast<const std::vector<std::array<double, 3>>*>(nullptr));
+  if(coarse_points != nullptr && (factor > 0 || protrusion_factor > 0))
+  {
+    internal::Coarse_end_point_guide guide{*coarse_points, tolerance, internal::unmatched_threshold_factor, 0};
+    const std::size_t ends = internal::graph_end_points(skeleton).size();
+    guide.budget = ends > coarse_points->size() ? ends - coarse_points->size() : 0;
+    if(guide.budget > 0)
+    {
+      const std::size_t budget = guide.budget;
+      thresholds.coarse = &guide;
+      prune_until_nothing_changes(false);
+      report.snipped_beyond_coarse_detail = budget - guide.budget;
+    }
   }
   return report;
 }

@@ -118,7 +118,8 @@ namespace Geodesic_skeleton {
 /// \throws std::invalid_argument for an empty mesh (no face), a non-finite coordinate, a
 ///      mesh of zero area, a resolution out of range, or a mesh that encloses no voxel at
 ///      all (an open sheet, or a shape thinner than a voxel: raise the resolution or close
-///      the mesh). A closed shape whose surface touches all its voxels (a plate under
+///      the mesh; then the exception is a `No_enclosed_volume`, derived from
+///      `std::invalid_argument`). A closed shape whose surface touches all its voxels (a plate under
 ///      about two voxels thick) is not such a mesh when it encloses the centres of some of
 ///      them, counted by winding numbers along grid lines in the three directions, and the
 ///      outside flood reached no centre that it encloses (as it does through the openings

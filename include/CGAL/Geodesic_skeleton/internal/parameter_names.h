@@ -31,6 +31,8 @@ CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(voxelized_surface)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(mat_radius_map)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(spur_length_factor)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(limb_protrusion_factor)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(coarse_end_points)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(coarse_end_point_tolerance)
 
 // smooth_skeleton
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(smoothing_window)
@@ -54,6 +56,7 @@ CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(curve_skeleton_output)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(thinned_skeleton_output)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(reeb_graph_output)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(number_of_reeb_intervals)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(level_of_detail_resolution)
 
 // to_graph (the maps of the curve skeleton it writes)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(skeleton_point_map)

@@ -6,6 +6,7 @@
 
 // The machinery of voxelize() (include/CGAL/Geodesic_skeleton/voxelize.h): not part of the API.
 
+#include <CGAL/Geodesic_skeleton/No_enclosed_volume.h>
 #include <CGAL/Geodesic_skeleton/Voxel_frame.h>
 #include <CGAL/Geodesic_skeleton/Voxelized_surface.h>
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
@@ -229,7 +230,7 @@ std::size_t voxelize_impl(const FaceGraph& mesh, VoxelSet& voxels, const NamedPa
     msg << caller << ": the mesh encloses no volume at resolution " << resolution
         << " (an open sheet, a surface with holes wider than a voxel, or a shape thinner "
            "than a voxel); close the mesh or raise the resolution";
-    throw std::invalid_argument(msg.str());
+    throw No_enclosed_volume(msg.str());
   }
 
   if(!keep_surface_voxels)
