@@ -508,6 +508,10 @@ BOOST_AUTO_TEST_CASE(absurd_parameters_give_clear_exceptions)
                     std::invalid_argument);
   BOOST_CHECK_THROW(gs::prune_skeleton(skeleton, gs::parameters::coarse_end_point_tolerance(std::nan(""))),
                     std::invalid_argument);
+  const std::vector<std::array<double, 3>> not_finite{{0.5, std::nan(""), 0.5}};
+  const gs::Sparse_voxel_set before_the_throw = skeleton;
+  BOOST_CHECK_THROW(gs::prune_skeleton(skeleton, gs::parameters::coarse_end_points(&not_finite)), std::invalid_argument);
+  BOOST_TEST((contents(skeleton) == contents(before_the_throw)));
   BOOST_CHECK_THROW(gs::prune_skeleton(skeleton, gs::parameters::mat_radius_map(
                                                      CGAL::Constant_property_map<Voxel_key, double>(-2.0))),
                     std::invalid_argument);

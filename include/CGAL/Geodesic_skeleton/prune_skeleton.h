@@ -20,9 +20,9 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <vector>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Geodesic_skeleton {
@@ -143,7 +143,7 @@ struct Pruning_report
 ///
 /// \returns what was removed, and how many rounds of snipping were made.
 /// \throws std::invalid_argument when `spur_length_factor`, `limb_protrusion_factor` or
-///         `coarse_end_point_tolerance` is out of range or a radius or sheet radius is negative or not finite.
+///         `coarse_end_point_tolerance` is out of range, a coarse end point is not finite, or a radius or sheet radius is negative or not finite.
 ///
 /// \b Complexity: O(N log N + V M) for N skeleton voxels per round of snipping (one Dijkstra
 /// per region, over the region; each end branch traced once), where the protrusions of the
@@ -175,6 +175,13 @@ Pruning_report prune_skeleton(VoxelSet& skeleton,
       choose_parameter(get_parameter(np, internal_np::coarse_end_point_tolerance_tag),
                        parameter_ranges::coarse_end_point_tolerance.default_value),
       "prune_skeleton");
+  const std::vector<std::array<double, 3>>* coarse_points =
+      choose_parameter(get_parameter(np, internal_np::coarse_end_points_tag),
+                       static_cast<const std::vector<std::array<double, 3>>*>(nullptr));
+  if(coarse_points != nullptr)
+    for(const std::array<double, 3>& p : *coarse_points)
+      if(!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+        throw std::invalid_argument("prune_skeleton: a coarse end point has a non-finite coordinate");
   const auto mat_radius_map = choose_parameter(get_parameter(np, internal_np::mat_radius_map_tag),
                                                CGAL::Constant_property_map<Voxel_key, double>(1.0));
   const auto sheet_radius_map = choose_parameter(get_parameter(np, internal_np::sheet_radius_map_tag),
@@ -226,9 +233,6 @@ Pruning_report prune_skeleton(VoxelSet& skeleton,
   // Then, given the end points of a coarser skeleton of the same shape, the end branches
   // that it does not have are judged with larger thresholds, until the skeleton has no
   // more end points than it.
-  const std::vector<std::array<double, 3>>* coarse_points =
-      choose_parameter(get_parameter(np, internal_np::coarse_end_points_tag),
-                       static_cast<const std::vector<std::array<double, 3>>*>(nullptr));
   if(coarse_points != nullptr && (factor > 0 || protrusion_factor > 0))
   {
     internal::Coarse_end_point_guide guide{*coarse_points, tolerance, internal::unmatched_threshold_factor, 0};

@@ -39,9 +39,9 @@ std::vector<Voxel_key> graph_end_points(const VoxelSet& skeleton)
 
 // How much larger the snipping's thresholds are for an end branch that the coarser
 // skeleton does not have: 3 times the default level of detail (0.75 of the body's thickness)
-// is more than 2 thicknesses, what the corner branches of a block or the second toe of a
-// hoof reach out, and less than a limb, which reaches out several thicknesses; such a
-// branch is snipped only while the finer skeleton has more end points than the coarser.
+// is more than 2 thicknesses, more than the corner branches of a block reach out, and less
+// than a limb, which reaches out several thicknesses; such a branch is snipped only while
+// the finer skeleton has more end points than the coarser.
 constexpr double unmatched_threshold_factor = 3.;
 
 // What the snipping reads of a coarser skeleton: its end points, in the grid coordinates
