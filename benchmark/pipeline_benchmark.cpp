@@ -143,13 +143,11 @@ Pruning_counts pruning_counts(const Mesh& mesh, int resolution)
   std::optional<std::vector<std::array<double, 3>>> coarse_ends;
   if(resolution > gs::default_voxel_resolution)
     coarse_ends = gs::coarse_skeleton_end_points(mesh, gs::default_voxel_resolution, solid.frame());
-  c.pruning = coarse_ends ? gs::prune_skeleton(
-                                skeleton, gs::parameters::combine(
-                                              radius, gs::parameters::coarse_end_points(&std::as_const(*coarse_ends)),
-                                              gs::parameters::coarse_end_point_tolerance(
-                                                  gs::parameter_ranges::coarse_end_point_tolerance.default_value *
-                                                  resolution / gs::default_voxel_resolution)))
-                          : gs::prune_skeleton(skeleton, radius);
+  c.pruning = gs::prune_skeleton(
+      skeleton, gs::parameters::combine(
+                    radius, gs::parameters::coarse_end_points(coarse_ends ? &std::as_const(*coarse_ends) : nullptr),
+                    gs::parameters::coarse_end_point_tolerance(
+                        gs::default_coarse_end_point_tolerance(resolution, gs::default_voxel_resolution))));
   c.branched_after = gs::count_skeleton_points(skeleton).branched_connection;
   c.pruned = skeleton.size();
   return c;

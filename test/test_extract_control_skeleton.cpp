@@ -214,6 +214,34 @@ BOOST_AUTO_TEST_CASE(a_finer_grid_keeps_the_end_points_of_the_default_one)
   }
   const Mesh cow = test::demo_mesh<Mesh>("cow.off");
   Control c;
+  // The end points that extract_control_skeleton() passes on, asked for directly: as many
+  // as the rig at 64 has, inside the grid; none for a mesh without volume at that
+  // resolution; bad input is an error, as in the stages.
+  gs::Dense_voxel_grid handle_at_128;
+  const Mesh handle = test::demo_mesh<Mesh>("handle.off");
+  gs::voxelize(handle, handle_at_128, gs::parameters::resolution(128));
+  const auto handle_ends = gs::coarse_skeleton_end_points(handle, 64, handle_at_128.frame());
+  Control handle_at_64;
+  gs::extract_control_skeleton(handle, handle_at_64);
+  BOOST_REQUIRE(handle_ends.has_value());
+  BOOST_TEST(handle_ends->size() == joints_of_kind(handle_at_64, gs::Joint_kind::end));
+  const gs::Voxel_box box = handle_at_128.bounding_box();
+  for(const std::array<double, 3>& p : *handle_ends)
+    BOOST_TEST((p[0] >= box.min.x - 1 && p[0] <= box.max.x + 2 && p[1] >= box.min.y - 1 && p[1] <= box.max.y + 2 &&
+                p[2] >= box.min.z - 1 && p[2] <= box.max.z + 2));
+  BOOST_TEST(gs::default_coarse_end_point_tolerance(128, 64) == 8.);
+  test::Soup sheet; // a flat open square: no volume at any resolution
+  sheet.add_point(0, 0, 0);
+  sheet.add_point(1, 0, 0);
+  sheet.add_point(1, 1, 0);
+  sheet.add_point(0, 1, 0);
+  sheet.add_quad(0, 1, 2, 3);
+  const Mesh open_sheet = test::mesh_of<Mesh>(sheet);
+  BOOST_TEST(!gs::coarse_skeleton_end_points(open_sheet, 64, handle_at_128.frame()).has_value());
+  Mesh nan_cow = cow;
+  nan_cow.point(*vertices(nan_cow).begin()) = Point(std::nan(""), 0, 0);
+  BOOST_CHECK_THROW(gs::coarse_skeleton_end_points(nan_cow, 64, handle_at_128.frame()), std::invalid_argument);
+
   BOOST_CHECK_THROW(gs::extract_control_skeleton(cow, c, gs::parameters::level_of_detail_resolution(-1)),
                     std::invalid_argument);
   BOOST_CHECK_THROW(gs::extract_control_skeleton(cow, c, gs::parameters::level_of_detail_resolution(9000)),

@@ -304,6 +304,21 @@ BOOST_AUTO_TEST_CASE(bad_input_is_a_clear_error)
   sheet.add_point(0, 1, 0);
   sheet.add_quad(0, 1, 2, 3);
   BOOST_TEST(throws_with<std::invalid_argument>([&] { gs::voxelize(mesh_of(sheet), s); }, "encloses no volume"));
+  // That one, and only that one, is a No_enclosed_volume: a finer grid or a closed mesh may
+  // have volume where this one has none, bad input has none at any resolution.
+  BOOST_TEST(throws_with<gs::No_enclosed_volume>([&] { gs::voxelize(mesh_of(sheet), s); }, "encloses no volume"));
+  BOOST_CHECK_THROW(gs::voxelize(nan_mesh, s), std::invalid_argument);
+  try
+  {
+    gs::voxelize(nan_mesh, s);
+  }
+  catch(const gs::No_enclosed_volume&)
+  {
+    BOOST_ERROR("a non-finite coordinate is bad input, not a mesh without volume");
+  }
+  catch(const std::invalid_argument&)
+  {
+  }
 
   const Mesh cube = mesh_of(test::box(0, 0, 0, 1, 1, 1));
   BOOST_TEST(throws_with<std::invalid_argument>([&] { gs::voxelize(cube, s, gs::parameters::resolution(3)); }, "resolution must be an integer in [4, 8192], got 3"));

@@ -18,6 +18,7 @@
 #include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/internal/prune/coarse_end_points.h>
+#include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 #include <CGAL/Geodesic_skeleton/prune_skeleton.h>
 #include <CGAL/Geodesic_skeleton/remove_small_pieces.h>
@@ -33,6 +34,19 @@
 
 namespace CGAL {
 namespace Geodesic_skeleton {
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// The `coarse_end_point_tolerance` that goes with the end points of
+/// `coarse_skeleton_end_points()` at `coarse_resolution`, given to `prune_skeleton()` on a
+/// grid of `resolution`: the default tolerance (4 voxels) on the coarser grid, in voxels of
+/// the finer one, as `extract_control_skeleton()` gives it.
+/// \pre `coarse_resolution` > 0.
+/// \b Complexity: constant.
+inline double default_coarse_end_point_tolerance(int resolution, int coarse_resolution)
+{
+  return parameter_ranges::coarse_end_point_tolerance.default_value * double(resolution) /
+         double(coarse_resolution);
+}
 
 /// \ingroup PkgGeodesicSkeletonRef
 /// The end points of the pruned voxel skeleton of `mesh` at `resolution`, in the grid

@@ -198,10 +198,12 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 /// At a resolution finer than `level_of_detail_resolution` (default: the default
 /// resolution, 64), `coarse_skeleton_end_points()` first runs the same voxel stages at that
 /// resolution, up to `prune_skeleton()`, and the end points of that skeleton's graph are
-/// given to the finer `prune_skeleton()` (its `coarse_end_points`, with a tolerance of 4
-/// voxels of the coarser grid; none when the mesh encloses no volume there): the finer skeleton then keeps no more end points than the coarser one
-/// has, where its extra end branches are detail under 3 times the level of detail (the
-/// resolution is a sampling choice; which branches the rig has should not depend on it).
+/// given to the finer `prune_skeleton()` (its `coarse_end_points`, with
+/// `default_coarse_end_point_tolerance()`, 4 voxels of the coarser grid; none when the mesh
+/// encloses no volume there): the finer skeleton then keeps no more end points than the
+/// coarser one has, where its extra end branches are detail under 3 times the level of
+/// detail (the resolution is a sampling choice; which branches the rig has should not
+/// depend on it).
 ///
 /// Between `smooth_skeleton()` and `split_into_bones()`, `move_skeleton_inside()`: when the
 /// mesh is a closed triangle mesh, a point of the curve skeleton that lies outside it
@@ -411,17 +413,16 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
     coarse_ends = coarse_skeleton_end_points(mesh, report.level_of_detail_resolution, solid.frame(), np);
   clock.finished("level_of_detail");
 
-  const auto radii_np = parameters::combine(parameters::mat_radius_map(mat_radius_in_voxels_map(distances)),
-                                            parameters::sheet_radius_map(sheet_radius_in_voxels_map(sheet_radii)));
-  if(coarse_ends)
-    report.pruning = prune_skeleton(
-        skeleton, parameters::combine(radii_np, parameters::coarse_end_points(&std::as_const(*coarse_ends)),
-                                      parameters::coarse_end_point_tolerance(
-                                          parameter_ranges::coarse_end_point_tolerance.default_value *
-                                          double(report.resolution) / double(report.level_of_detail_resolution)),
-                                      np));
-  else
-    report.pruning = prune_skeleton(skeleton, parameters::combine(radii_np, np));
+  report.pruning = prune_skeleton(
+      skeleton,
+      parameters::combine(
+          parameters::mat_radius_map(mat_radius_in_voxels_map(distances)),
+          parameters::sheet_radius_map(sheet_radius_in_voxels_map(sheet_radii)),
+          parameters::coarse_end_points(coarse_ends ? &std::as_const(*coarse_ends) : nullptr),
+          parameters::coarse_end_point_tolerance(
+              coarse_ends ? default_coarse_end_point_tolerance(report.resolution, report.level_of_detail_resolution)
+                          : parameter_ranges::coarse_end_point_tolerance.default_value),
+          np));
   clock.finished("prune");
 
   Skeleton curve;

@@ -9,6 +9,7 @@
 
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/internal/to_graph/skeleton_adjacency.h>
+#include <CGAL/Geodesic_skeleton/internal/vec3.h>
 
 #include <array>
 #include <cstddef>
@@ -59,13 +60,10 @@ struct Coarse_end_point_guide
 
   bool has_match_near(const Voxel_key& tip) const
   {
-    const double c[3] = {tip.x + 0.5, tip.y + 0.5, tip.z + 0.5};
-    for(const std::array<double, 3>& p : points)
-    {
-      const double dx = p[0] - c[0], dy = p[1] - c[1], dz = p[2] - c[2];
-      if(dx * dx + dy * dy + dz * dz <= tolerance * tolerance)
+    const Vec3 centre{tip.x + 0.5, tip.y + 0.5, tip.z + 0.5};
+    for(const Vec3& p : points)
+      if(squared_distance3(p, centre) <= tolerance * tolerance)
         return true;
-    }
     return false;
   }
 
