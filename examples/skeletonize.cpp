@@ -114,7 +114,7 @@ const Numeric_option numeric_options[] = {
     {"--limb-protrusion", "F", ranges::limb_protrusion_factor,
      "level of detail: snip end branches reaching less than F largest MAT radii out of their junction"},
     {"--level-of-detail-resolution", "N", ranges::level_of_detail_resolution,
-     "level of detail: a finer grid keeps no more end points than the skeleton at N has (0: off)"},
+     "level of detail: a finer grid keeps no more end points than the skeleton at N has, ending where it ends (0: off)"},
     {"--smoothing-window", "W", ranges::smoothing_window, "points averaged along branches",
      "5 at resolution 64, scaled with it: 9 at 128"},
     {"--bend-threshold", "T", ranges::bend_threshold, "chord-to-point accumulation that makes a joint"},

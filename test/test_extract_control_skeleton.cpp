@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -62,6 +63,49 @@ std::size_t joints_of_kind(const Control& c, gs::Joint_kind kind)
 {
   const auto joints = vertices(c);
   return std::size_t(std::count_if(joints.first, joints.second, [&](std::size_t j) { return c[j].kind == kind; }));
+}
+
+// The end points (kind end) of `c`.
+std::vector<Point> end_points_of(const Control& c)
+{
+  std::vector<Point> ends;
+  for(const auto& j : test::joints(c))
+    if(j.kind == gs::Joint_kind::end)
+      ends.push_back(j.point);
+  return ends;
+}
+
+// The largest distance from an end point of `fine` to the nearest end point of `coarse`.
+double farthest_end_point_from(const Control& fine, const Control& coarse)
+{
+  double farthest = 0;
+  for(const Point& p : end_points_of(fine))
+  {
+    double nearest = std::numeric_limits<double>::infinity();
+    for(const Point& q : end_points_of(coarse))
+      nearest = (std::min)(nearest, std::sqrt(CGAL::squared_distance(p, q)));
+    farthest = (std::max)(farthest, nearest);
+  }
+  return farthest;
+}
+
+// The rigs of a mesh at the default resolution and at 128, with and without the level of
+// detail of the default grid, and the reports of the first two.
+struct Rigs_at_64_and_128
+{
+  Control at_64, at_128, every_branch_at_128;
+  gs::Control_skeleton_report coarse, fine;
+};
+
+Rigs_at_64_and_128 rigs_at_64_and_128(const Mesh& mesh)
+{
+  Rigs_at_64_and_128 rigs;
+  rigs.coarse = gs::extract_control_skeleton(mesh, rigs.at_64);
+  rigs.fine = gs::extract_control_skeleton(mesh, rigs.at_128, gs::parameters::resolution(128));
+  gs::extract_control_skeleton(mesh, rigs.every_branch_at_128,
+                               gs::parameters::combine(gs::parameters::resolution(128),
+                                                       gs::parameters::level_of_detail_resolution(0)));
+  return rigs;
 }
 
 } // namespace
@@ -190,26 +234,36 @@ BOOST_AUTO_TEST_CASE(a_rig_keeps_its_size_when_the_resolution_doubles)
 // The end of a block has four corners: at 64 thinning merges them into two branches, at 128
 // all four come out, each reaching out of the junction's ball as far as the two did. With
 // the level of detail of the default grid, resolution 128 keeps as many end points as 64.
+// The lion's head is open at the neck. At 64 its chain runs from the jaw to the back of the
+// head; at 128 the finer grid carries it on down into the open neck, past where 64 ends
+// it. With the level of detail of the default grid it is cut back there: every end point
+// at 128 lies near one at 64 (within the tolerance, 4 voxels of the default grid).
+BOOST_AUTO_TEST_CASE(a_finer_grid_ends_where_the_default_one_does)
+{
+  const Rigs_at_64_and_128 lion = rigs_at_64_and_128(test::demo_mesh<Mesh>("lion.off"));
+  const double tolerance = 4 * lion.coarse.voxel_size;
+  BOOST_TEST(!end_points_of(lion.at_128).empty());
+  BOOST_TEST(farthest_end_point_from(lion.at_128, lion.at_64) <= tolerance);
+  BOOST_TEST(farthest_end_point_from(lion.every_branch_at_128, lion.at_64) > tolerance);
+  BOOST_TEST(lion.coarse.pruning.cut_back_branches == 0u);
+  BOOST_TEST(lion.fine.pruning.cut_back_branches >= 1u);
+  BOOST_TEST(lion.fine.pruning.cut_back_points > lion.fine.pruning.cut_back_branches);
+  BOOST_TEST(num_vertices(lion.at_128) == num_vertices(lion.at_64));
+}
+
 BOOST_AUTO_TEST_CASE(a_finer_grid_keeps_the_end_points_of_the_default_one)
 {
   for(const char* name : {"handle.off", "dragknob.off"})
   {
     BOOST_TEST_CONTEXT(name)
     {
-      const Mesh mesh = test::demo_mesh<Mesh>(name);
-      Control at_64, at_128, every_branch_at_128;
-      const gs::Control_skeleton_report coarse = gs::extract_control_skeleton(mesh, at_64);
-      const gs::Control_skeleton_report fine =
-          gs::extract_control_skeleton(mesh, at_128, gs::parameters::resolution(128));
-      gs::extract_control_skeleton(mesh, every_branch_at_128,
-                                   gs::parameters::combine(gs::parameters::resolution(128),
-                                                           gs::parameters::level_of_detail_resolution(0)));
-      const std::size_t ends_at_64 = joints_of_kind(at_64, gs::Joint_kind::end);
-      BOOST_TEST(joints_of_kind(at_128, gs::Joint_kind::end) == ends_at_64);
-      BOOST_TEST(joints_of_kind(every_branch_at_128, gs::Joint_kind::end) > ends_at_64);
-      BOOST_TEST(coarse.pruning.snipped_beyond_coarse_detail == 0u);
-      BOOST_TEST(fine.pruning.snipped_beyond_coarse_detail >= 1u);
-      BOOST_TEST(fine.level_of_detail_resolution == 64);
+      const Rigs_at_64_and_128 rigs = rigs_at_64_and_128(test::demo_mesh<Mesh>(name));
+      const std::size_t ends_at_64 = joints_of_kind(rigs.at_64, gs::Joint_kind::end);
+      BOOST_TEST(joints_of_kind(rigs.at_128, gs::Joint_kind::end) == ends_at_64);
+      BOOST_TEST(joints_of_kind(rigs.every_branch_at_128, gs::Joint_kind::end) > ends_at_64);
+      BOOST_TEST(rigs.coarse.pruning.snipped_beyond_coarse_detail == 0u);
+      BOOST_TEST(rigs.fine.pruning.snipped_beyond_coarse_detail >= 1u);
+      BOOST_TEST(rigs.fine.level_of_detail_resolution == 64);
     }
   }
   const Mesh cow = test::demo_mesh<Mesh>("cow.off");

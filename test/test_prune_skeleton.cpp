@@ -478,8 +478,12 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(an_end_branch_that_a_coarser_skeleton_has_not_is_s
   BOOST_TEST(guided_report.snipped_beyond_coarse_detail == 1u);
   BOOST_TEST(components_of(guided) == 1u);
 
-  // A tolerance that takes in the +x arm's coarse end point (11.3 voxels away) keeps it.
-  BOOST_TEST(pruned_with(&two_ends, 12.0).first.count(end_of_plus_y_arm) == 1u);
+  // A tolerance that takes in the +x arm's coarse end point (11.3 voxels away) keeps the y
+  // arm: not snipped (its tip matches that point, so it is only cut back towards it).
+  const auto [matched, matched_report] = pruned_with(&two_ends, 12.0);
+  BOOST_TEST(matched.count(Voxel_key{0, 2, 0}) == 1u);
+  BOOST_TEST(matched_report.snipped_beyond_coarse_detail == 0u);
+  BOOST_TEST(matched_report.cut_back_branches >= 1u);
 
   // As many coarse end points as ends: nothing more is snipped, even where none matches.
   const std::vector<std::array<double, 3>> three_elsewhere{{0.5, -9.5, 0.5}, {0.5, 0.5, 9.5}, {0.5, 0.5, -9.5}};
@@ -493,6 +497,84 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(an_end_branch_that_a_coarser_skeleton_has_not_is_s
   BOOST_TEST(one.count(Voxel_key{8, 0, 0}) == 1u);
   BOOST_TEST(one_report.snipped_beyond_coarse_detail == 1u);
   BOOST_TEST(components_of(one) == 1u);
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(an_end_branch_is_cut_back_to_where_the_coarser_skeleton_ends, VoxelSet,
+                              Voxel_set_models)
+{
+  const auto radius = CGAL::Constant_property_map<Voxel_key, double>(3.0);
+  auto pruned_with = [&](const std::vector<Voxel_key>& voxels, const std::vector<std::array<double, 3>>* coarse,
+                         double tolerance) {
+    VoxelSet skeleton = voxel_set<VoxelSet>(voxels);
+    const gs::Pruning_report report = gs::prune_skeleton(
+        skeleton, gs::parameters::combine(gs::parameters::mat_radius_map(radius),
+                                          gs::parameters::coarse_end_points(coarse),
+                                          gs::parameters::coarse_end_point_tolerance(tolerance)));
+    return std::make_pair(contents(skeleton), report);
+  };
+  const std::vector<Voxel_key> three_arms = thick_junction_with_three_arms();
+  const std::set<Voxel_key> uncut = pruned_with(three_arms, nullptr, 2.0).first;
+  // `uncut` without the voxels (0, y, 0) of the y arm (from (0, 2, 0) to (0, 8, 0)) past `y`.
+  auto y_arm_up_to = [&](int y) {
+    std::set<Voxel_key> expected = uncut;
+    for(int past = y + 1; past <= 8; ++past)
+      expected.erase(Voxel_key{0, past, 0});
+    return expected;
+  };
+
+  // The coarser skeleton ends halfway along the y arm, 4 voxels from its tip: with a
+  // tolerance of 2 the tip does not match it, but the arm runs on past it, and loses its
+  // voxels past (0, 4, 0), the one nearest it. The x arms end on their coarse end points.
+  const std::vector<std::array<double, 3>> ends_halfway{tip_of_plus_x_arm, tip_of_minus_x_arm, {0.5, 4.5, 0.5}};
+  const auto [past, past_report] = pruned_with(three_arms, &ends_halfway, 2.0);
+  BOOST_TEST((past == y_arm_up_to(4)));
+  BOOST_TEST(past_report.cut_back_branches == 1u);
+  BOOST_TEST(past_report.cut_back_points == 4u);
+  BOOST_TEST(past_report.snipped_beyond_coarse_detail == 0u);
+
+  // A coarse end point that the tip matches (2 voxels away) but that is nearer a voxel
+  // further in: the tip reaches further than the coarser skeleton, and is cut back to it.
+  const std::vector<std::array<double, 3>> near_the_tip{tip_of_plus_x_arm, tip_of_minus_x_arm, {0.5, 6.5, 0.5}};
+  const auto [matched, matched_report] = pruned_with(three_arms, &near_the_tip, 2.5);
+  BOOST_TEST((matched == y_arm_up_to(6)));
+  BOOST_TEST(matched_report.cut_back_points == 2u);
+
+  // A coarse end point on the face between two voxels, (0, 5, 0) and (0, 6, 0), is as near
+  // both: the one nearer the tip stays, whichever way the rounding of a moved mesh tips it.
+  for(const double y : {6.0, 6.0 + 1e-12, 6.0 - 1e-12})
+  {
+    const std::vector<std::array<double, 3>> on_a_face{tip_of_plus_x_arm, tip_of_minus_x_arm, {0.5, y, 0.5}};
+    BOOST_TEST((pruned_with(three_arms, &on_a_face, 3.0).first == y_arm_up_to(6)));
+  }
+
+  // Coarse end points on the tips, or farther than the tolerance from every branch voxel,
+  // cut nothing.
+  const std::vector<std::array<double, 3>> on_the_tips{tip_of_plus_x_arm, tip_of_minus_x_arm, tip_of_plus_y_arm};
+  const auto [kept, kept_report] = pruned_with(three_arms, &on_the_tips, 2.0);
+  BOOST_TEST((kept == uncut));
+  BOOST_TEST(kept_report.cut_back_branches == 0u);
+  const std::vector<std::array<double, 3>> off_the_arms{tip_of_plus_x_arm, tip_of_minus_x_arm, {5.5, 4.5, 0.5}};
+  BOOST_TEST((pruned_with(three_arms, &off_the_arms, 2.0).first == uncut));
+
+  // A path has no junction: its end that no coarse end point is near is cut back to the
+  // coarse end point on the way, its other end stays.
+  std::vector<Voxel_key> path;
+  add_segment(path, Voxel_key{-10, 0, 0}, Voxel_key{1, 0, 0}, 21);
+  const std::vector<std::array<double, 3>> start_and_middle{{-9.5, 0.5, 0.5}, {0.5, 0.5, 0.5}};
+  const auto [shortened, shortened_report] = pruned_with(path, &start_and_middle, 2.0);
+  std::set<Voxel_key> first_half;
+  for(int x = -10; x <= 0; ++x)
+    first_half.insert(Voxel_key{x, 0, 0});
+  BOOST_TEST((shortened == first_half));
+  BOOST_TEST(shortened_report.cut_back_points == 10u);
+
+  // Coarse end points all along it: the path is cut back from its free end to the first one
+  // met, never removed whole.
+  const std::vector<std::array<double, 3>> along{{-9.5, 0.5, 0.5}, {4.5, 0.5, 0.5}, {-3.5, 0.5, 0.5}};
+  const std::set<Voxel_key> to_the_first = pruned_with(path, &along, 2.0).first;
+  BOOST_TEST(to_the_first.size() == 15u);
+  BOOST_TEST(to_the_first.count(Voxel_key{4, 0, 0}) == 1u);
+  BOOST_TEST(to_the_first.count(Voxel_key{5, 0, 0}) == 0u);
 }
 
 BOOST_AUTO_TEST_CASE(absurd_parameters_give_clear_exceptions)

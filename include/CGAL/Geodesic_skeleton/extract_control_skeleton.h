@@ -266,9 +266,9 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{level_of_detail_resolution}
 ///     \cgalParamDescription{the resolution whose skeleton's end points decide how many end
-///                           points a finer skeleton keeps (`prune_skeleton()`'s
-///                           `coarse_end_points`), an integer in [0, 8192]; 0, or a value not
-///                           below `resolution`, turns this off}
+///                           points a finer skeleton keeps and where its branches end
+///                           (`prune_skeleton()`'s `coarse_end_points`), an integer in
+///                           [0, 8192]; 0, or a value not below `resolution`, turns this off}
 ///     \cgalParamType{`int`}
 ///     \cgalParamDefault{64, the default resolution}
 ///   \cgalParamNEnd

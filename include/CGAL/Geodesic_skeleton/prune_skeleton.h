@@ -12,6 +12,7 @@
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
 #include <CGAL/Geodesic_skeleton/internal/prune/branched_regions.h>
+#include <CGAL/Geodesic_skeleton/internal/prune/coarse_end_points.h>
 #include <CGAL/Geodesic_skeleton/internal/prune/spurious_branches.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
@@ -38,6 +39,9 @@ struct Pruning_report
   std::size_t rounds = 0;                    ///< rounds of pruning and snipping that changed something
   /// end branches snipped because a coarser skeleton does not have them (`coarse_end_points`)
   std::size_t snipped_beyond_coarse_detail = 0;
+  /// end branches cut back to a coarse end point that they ran on past (`coarse_end_points`)
+  std::size_t cut_back_branches = 0;
+  std::size_t cut_back_points = 0;           ///< voxels of those branches removed so
 };
 
 /// \ingroup PkgGeodesicSkeletonRef
@@ -67,7 +71,12 @@ struct Pruning_report
 /// end point, detail that the finer grid resolves and the coarser one does not (the
 /// corners of a block, which a coarser grid merges into fewer branches), is judged with
 /// both thresholds 3 times larger (`unmatched_threshold_factor`), and each one snipped so
-/// counts against the surplus of end points. Both
+/// counts against the surplus of end points. Last, each end branch is cut back to where the
+/// coarser skeleton ends (a finer grid carries a branch further, into a hoof's curl, the
+/// fingers of a hand, an open neck): to its voxel nearest the coarse end point nearest its
+/// tip, when one is within the tolerance of the tip, else nearest the first coarse end point
+/// that no end point matches and that the branch passes within the tolerance of; one branch
+/// at a time, the voxel next to its junction staying. Both
 /// thresholds are ratios of lengths of the shape, so that the same features are kept at
 /// every resolution that resolves them. The radius that judges a voxel is its MAT radius,
 /// or its sheet radius where that is larger (in a thin sheet, the sheet's half width); the
@@ -78,7 +87,8 @@ struct Pruning_report
 /// Pruning never disconnects a component (every terminator stays linked to its
 /// region's centroid and a snipped branch hangs by one junction), never opens a cycle
 /// that passes through a region (the cycle's two terminators stay linked through the
-/// centroid) and never snips a path component (no junction).
+/// centroid) and never snips a path component (no junction); with `coarse_end_points`, a
+/// path can be cut back from an end, never below two voxels.
 ///
 /// \tparam VoxelSet a model of `VoxelSet`; read through `for_each()` and `contains()`
 ///         (no dense copy: the classes and the regions are kept in hash maps by key).
@@ -135,7 +145,8 @@ struct Pruning_report
 ///   \cgalParamNBegin{coarse_end_point_tolerance}
 ///     \cgalParamDescription{how near the tip of an end branch, in voxels of `skeleton`, a
 ///                           coarse end point must be for the coarser grid to have the branch,
-///                           in [0, 1e6] (package parameter)}
+///                           and how near a voxel of the branch for the branch to be cut back
+///                           to it, in [0, 1e6] (package parameter)}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{4}
 ///   \cgalParamNEnd
@@ -152,7 +163,9 @@ struct Pruning_report
 /// the third axis (O(N) at worst; a small part of the skeleton in practice); a few rounds
 /// in practice; O(N) extra memory. With `coarse_end_points` (C of them), the rounds run once
 /// more and the tip of each end branch is compared with each coarse end point: O(E C) more
-/// per round for E end branches.
+/// per round for E end branches; cutting back traces the graph again after each of the K
+/// branches it cuts (K <= C) and compares the voxels of the end branches with the coarse end
+/// points: O(K N (log N + C)) more.
 template <typename VoxelSet, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Pruning_report prune_skeleton(VoxelSet& skeleton,
                               const NamedParameters& np = CGAL::parameters::default_values())
@@ -245,6 +258,10 @@ Pruning_report prune_skeleton(VoxelSet& skeleton,
       prune_until_nothing_changes(false);
       report.snipped_beyond_coarse_detail = budget - guide.budget;
     }
+    // And an end branch that runs on past a coarse end point is cut back to it.
+    const internal::Cut_back cut = internal::cut_back_to_coarse_end_points(skeleton, *coarse_points, tolerance);
+    report.cut_back_branches = cut.branches;
+    report.cut_back_points = cut.points;
   }
   return report;
 }

@@ -11,6 +11,7 @@
 #include <CGAL/Geodesic_skeleton/internal/to_graph/skeleton_adjacency.h>
 #include <CGAL/Geodesic_skeleton/internal/vec3.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -25,15 +26,10 @@ template <typename VoxelSet>
 std::vector<Voxel_key> graph_end_points(const VoxelSet& skeleton)
 {
   const Skeleton_adjacency graph = skeleton_adjacency(skeleton);
-  std::vector<std::size_t> degree(graph.nodes.size(), 0);
-  for(const auto& edge : graph.edges)
-  {
-    ++degree[std::size_t(edge.first)];
-    ++degree[std::size_t(edge.second)];
-  }
+  const std::vector<std::vector<int>> around = neighbours_of_nodes(graph);
   std::vector<Voxel_key> ends;
   for(std::size_t v = 0; v < graph.nodes.size(); ++v)
-    if(degree[v] == 1)
+    if(around[v].size() == 1)
       ends.push_back(graph.nodes[v]);
   return ends;
 }
@@ -80,6 +76,126 @@ struct Coarse_end_point_guide
       --budget;
   }
 };
+
+// What cutting back to the coarse end points removed.
+struct Cut_back
+{
+  std::size_t branches = 0; // end branches cut back
+  std::size_t points = 0;   // voxels removed
+};
+
+// `a` < `b` by more than rounding. The coarse end points are converted from the coarser
+// grid's frame, and a coarse voxel centre falls on the face between two voxels of a grid
+// twice as fine: the two are equally near it, and the rounding of a moved mesh would pick
+// either.
+inline bool clearly_nearer(double a, double b)
+{
+  return a < b - 1e-9 * (a + b);
+}
+
+// The index in `branch` (voxel centres `centre(branch[i])`) of the voxel nearest `point`
+// among those from `first` up to, not including, the last one, if one is within
+// `squared_tolerance`; ties to rounding go to the first, nearest the tip. `branch.size()`
+// when none is.
+template <typename Centre>
+std::size_t nearest_branch_voxel(const std::vector<int>& branch, std::size_t first, const Vec3& point,
+                                 double squared_tolerance, const Centre& centre)
+{
+  std::size_t nearest = branch.size();
+  double nearest_distance = 0;
+  for(std::size_t i = first; i + 1 < branch.size(); ++i)
+  {
+    const double d = squared_distance3(point, centre(branch[i]));
+    if(d <= squared_tolerance && (nearest == branch.size() || clearly_nearer(d, nearest_distance)))
+    {
+      nearest = i;
+      nearest_distance = d;
+    }
+  }
+  return nearest;
+}
+
+// Cuts back one end branch of the skeleton's graph so that it ends where the coarser
+// skeleton ends, and returns false when there is none to cut. An end point matches the
+// coarse end points within `tolerance` of it (as Coarse_end_point_guide matches them). Its
+// end branch (walk_from_end()) is cut back to the branch voxel nearest
+// - the coarse end point nearest the tip, when it matches one: a finer grid reaches further
+//   into a tip (a hoof's curl, a finger) than the coarser one;
+// - else, the coarse end point that no end point matches and that the branch passes within
+//   `tolerance` of, the first met from the tip: a finer grid carries the branch on into
+//   detail that the coarser one smooths away (a hand's fingers, an open neck).
+// The voxels from the tip up to, not including, that voxel go. The voxel next to the
+// junction (or to the other end of a path) always stays, so no branch goes whole. The
+// first end point in voxel order that has voxels to lose loses them.
+template <typename VoxelSet>
+bool cut_back_one_end_branch(VoxelSet& skeleton, const std::vector<std::array<double, 3>>& coarse,
+                             double tolerance, Cut_back& cut)
+{
+  const Skeleton_adjacency graph = skeleton_adjacency(skeleton);
+  const std::vector<std::vector<int>> around = neighbours_of_nodes(graph);
+  const auto centre = [&](int v) {
+    const Voxel_key& k = graph.nodes[std::size_t(v)];
+    return Vec3{k.x + 0.5, k.y + 0.5, k.z + 0.5};
+  };
+  const double squared_tolerance = tolerance * tolerance;
+  std::vector<int> ends;
+  for(int v = 0; v < int(graph.nodes.size()); ++v)
+    if(around[std::size_t(v)].size() == 1)
+      ends.push_back(v);
+  // The coarse end point nearest each end point within the tolerance (coarse.size(): none),
+  // and whether each coarse end point matches an end point.
+  std::vector<std::size_t> match(ends.size(), coarse.size());
+  std::vector<bool> coarse_matched(coarse.size(), false);
+  for(std::size_t e = 0; e < ends.size(); ++e)
+  {
+    double nearest = squared_tolerance;
+    for(std::size_t c = 0; c < coarse.size(); ++c)
+    {
+      const double d = squared_distance3(coarse[c], centre(ends[e]));
+      if(d > squared_tolerance)
+        continue;
+      coarse_matched[c] = true;
+      if(match[e] == coarse.size() || clearly_nearer(d, nearest))
+      {
+        match[e] = c;
+        nearest = d;
+      }
+    }
+  }
+
+  for(std::size_t e = 0; e < ends.size(); ++e)
+  {
+    const std::vector<int> branch = walk_from_end(around, ends[e]).nodes;
+    std::size_t cut_at = branch.size(); // the first voxel that stays
+    if(match[e] != coarse.size())
+      cut_at = nearest_branch_voxel(branch, 0, coarse[match[e]], squared_tolerance, centre);
+    else
+      for(std::size_t c = 0; c < coarse.size(); ++c)
+        if(!coarse_matched[c])
+          cut_at = (std::min)(cut_at, nearest_branch_voxel(branch, 1, coarse[c], squared_tolerance, centre));
+    if(cut_at == 0 || cut_at == branch.size())
+      continue;
+    for(std::size_t i = 0; i < cut_at; ++i)
+      skeleton.erase(graph.nodes[std::size_t(branch[i])]);
+    ++cut.branches;
+    cut.points += cut_at;
+    return true;
+  }
+  return false;
+}
+
+// Cuts back, one by one, the end branches that reach past where the coarser skeleton ends
+// (cut_back_one_end_branch()), so that the skeleton ends where the coarser one does.
+template <typename VoxelSet>
+Cut_back cut_back_to_coarse_end_points(VoxelSet& skeleton, const std::vector<std::array<double, 3>>& coarse,
+                                       double tolerance)
+{
+  Cut_back cut;
+  while(cut_back_one_end_branch(skeleton, coarse, tolerance, cut))
+  {
+  }
+  return cut;
+}
 
 } // namespace internal
 } // namespace Geodesic_skeleton

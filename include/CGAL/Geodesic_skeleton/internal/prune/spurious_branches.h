@@ -390,35 +390,25 @@ Graph_end_branches graph_end_branches(const VoxelSet& skeleton)
 {
   Graph_end_branches result;
   const Skeleton_adjacency graph = skeleton_adjacency(skeleton);
-  std::vector<std::vector<int>> around(graph.nodes.size());
-  for(const auto& [a, b] : graph.edges)
-  {
-    around[std::size_t(a)].push_back(b);
-    around[std::size_t(b)].push_back(a);
-  }
+  const std::vector<std::vector<int>> around = neighbours_of_nodes(graph);
   const auto key = [&](int v) { return graph.nodes[std::size_t(v)]; };
   const auto degree = [&](int v) { return around[std::size_t(v)].size(); };
   for(int end = 0; end < int(graph.nodes.size()); ++end)
   {
     if(degree(end) != 1)
       continue;
-    End_branch branch;
-    branch.voxels.push_back(key(end));
-    int previous = end, current = around[std::size_t(end)][0];
-    branch.length = step_length(key(end), key(current));
-    while(degree(current) == 2)
-    {
-      const std::vector<int>& next = around[std::size_t(current)];
-      const int ahead = next[0] == previous ? next[1] : next[0];
-      branch.voxels.push_back(key(current));
-      branch.length += step_length(key(current), key(ahead));
-      previous = current;
-      current = ahead;
-    }
-    if(degree(current) < 3)
+    const Walk_from_end walk = walk_from_end(around, end);
+    if(degree(walk.stop) < 3)
       continue; // a path component: no junction
-    branch.junction = key(current);
-    result.junction_degree[branch.junction] = degree(current);
+    End_branch branch;
+    for(std::size_t i = 0; i < walk.nodes.size(); ++i)
+    {
+      const int ahead = i + 1 < walk.nodes.size() ? walk.nodes[i + 1] : walk.stop;
+      branch.voxels.push_back(key(walk.nodes[i]));
+      branch.length += step_length(key(walk.nodes[i]), key(ahead));
+    }
+    branch.junction = key(walk.stop);
+    result.junction_degree[branch.junction] = degree(walk.stop);
     result.branches.push_back(std::move(branch));
   }
   return result;

@@ -51,6 +51,43 @@ Skeleton_adjacency skeleton_adjacency(std::vector<Voxel_key> nodes, const NodeOf
   return graph;
 }
 
+// The neighbours of each node of `graph`, in the order of its edges.
+inline std::vector<std::vector<int>> neighbours_of_nodes(const Skeleton_adjacency& graph)
+{
+  std::vector<std::vector<int>> around(graph.nodes.size());
+  for(const auto& [a, b] : graph.edges)
+  {
+    around[std::size_t(a)].push_back(b);
+    around[std::size_t(b)].push_back(a);
+  }
+  return around;
+}
+
+// The walk from an end node (degree 1) of a graph along its nodes of degree 2: the nodes
+// passed, the end node first, and the node where the walk stops, of degree 3 or more (the
+// end branch's junction) or 1 (the other end of a path).
+struct Walk_from_end
+{
+  std::vector<int> nodes;
+  int stop = -1;
+};
+
+// `around`: the graph's neighbours_of_nodes(); `end` a node of degree 1.
+inline Walk_from_end walk_from_end(const std::vector<std::vector<int>>& around, int end)
+{
+  Walk_from_end walk{{end}, around[std::size_t(end)][0]};
+  int previous = end;
+  while(around[std::size_t(walk.stop)].size() == 2)
+  {
+    const std::vector<int>& next = around[std::size_t(walk.stop)];
+    const int ahead = next[0] == previous ? next[1] : next[0];
+    walk.nodes.push_back(walk.stop);
+    previous = walk.stop;
+    walk.stop = ahead;
+  }
+  return walk;
+}
+
 template <typename VoxelSet>
 std::vector<Voxel_key> sorted_voxels(const VoxelSet& skeleton)
 {
