@@ -258,7 +258,7 @@ Pruning_report prune_skeleton(VoxelSet& skeleton,
       prune_until_nothing_changes(false);
       report.snipped_beyond_coarse_detail = budget - guide.budget;
     }
-    // And an end branch that runs on past a coarse end point is cut back to it.
+    // Last, each end branch is cut back to where the coarser skeleton ends.
     const internal::Cut_back cut = internal::cut_back_to_coarse_end_points(skeleton, *coarse_points, tolerance);
     report.cut_back_branches = cut.branches;
     report.cut_back_points = cut.points;
