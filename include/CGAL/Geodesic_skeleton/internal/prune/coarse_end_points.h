@@ -94,16 +94,15 @@ inline bool clearly_nearer(double a, double b)
 }
 
 // The index in `branch` (voxel centres `centre(branch[i])`) of the voxel nearest `point`
-// among those from `first` up to, not including, the last one, if one is within
-// `squared_tolerance`; ties to rounding go to the first, nearest the tip. `branch.size()`
-// when none is.
+// among all but the last one, if one is within `squared_tolerance`; ties to rounding go to
+// the first, nearest the tip. `branch.size()` when none is.
 template <typename Centre>
-std::size_t nearest_branch_voxel(const std::vector<int>& branch, std::size_t first, const Vec3& point,
-                                 double squared_tolerance, const Centre& centre)
+std::size_t nearest_branch_voxel(const std::vector<int>& branch, const Vec3& point, double squared_tolerance,
+                                 const Centre& centre)
 {
   std::size_t nearest = branch.size();
   double nearest_distance = 0;
-  for(std::size_t i = first; i + 1 < branch.size(); ++i)
+  for(std::size_t i = 0; i + 1 < branch.size(); ++i)
   {
     const double d = squared_distance3(point, centre(branch[i]));
     if(d <= squared_tolerance && (nearest == branch.size() || clearly_nearer(d, nearest_distance)))
@@ -168,11 +167,11 @@ bool cut_back_one_end_branch(VoxelSet& skeleton, const std::vector<std::array<do
     const std::vector<int> branch = walk_from_end(around, ends[e]).nodes;
     std::size_t cut_at = branch.size(); // the first voxel that stays
     if(match[e] != coarse.size())
-      cut_at = nearest_branch_voxel(branch, 0, coarse[match[e]], squared_tolerance, centre);
+      cut_at = nearest_branch_voxel(branch, coarse[match[e]], squared_tolerance, centre);
     else
       for(std::size_t c = 0; c < coarse.size(); ++c)
         if(!coarse_matched[c])
-          cut_at = (std::min)(cut_at, nearest_branch_voxel(branch, 1, coarse[c], squared_tolerance, centre));
+          cut_at = (std::min)(cut_at, nearest_branch_voxel(branch, coarse[c], squared_tolerance, centre));
     if(cut_at == 0 || cut_at == branch.size())
       continue;
     for(std::size_t i = 0; i < cut_at; ++i)
