@@ -65,13 +65,13 @@ std::size_t joints_of_kind(const Control& c, gs::Joint_kind kind)
   return std::size_t(std::count_if(joints.first, joints.second, [&](std::size_t j) { return c[j].kind == kind; }));
 }
 
-// The end points (kind end) of `c`.
+// The end points of `c`: its joints of kind end, and its roots with one child.
 std::vector<Point> end_points_of(const Control& c)
 {
   std::vector<Point> ends;
-  for(const auto& j : test::joints(c))
-    if(j.kind == gs::Joint_kind::end)
-      ends.push_back(j.point);
+  for(const auto j : boost::make_iterator_range(vertices(c)))
+    if(c[j].kind == gs::Joint_kind::end || (c[j].kind == gs::Joint_kind::root && out_degree(j, c) == 1))
+      ends.push_back(c[j].point);
   return ends;
 }
 
@@ -234,21 +234,39 @@ BOOST_AUTO_TEST_CASE(a_rig_keeps_its_size_when_the_resolution_doubles)
 // The end of a block has four corners: at 64 thinning merges them into two branches, at 128
 // all four come out, each reaching out of the junction's ball as far as the two did. With
 // the level of detail of the default grid, resolution 128 keeps as many end points as 64.
-// The lion's head is open at the neck. At 64 its chain runs from the jaw to the back of the
-// head; at 128 the finer grid carries it on down into the open neck, past where 64 ends
-// it. With the level of detail of the default grid it is cut back there: every end point
-// at 128 lies near one at 64 (within the tolerance, 4 voxels of the default grid).
+// Meshes whose branches end elsewhere at 128 than at 64. The lion's head and the head are
+// open at the neck, with as many end points at both resolutions: at 64 the lion's chain
+// runs from the jaw to the back of the head and the head's from the neck to the middle of
+// the head, while at 128 the snipping took the stub that ends there and kept a branch down
+// the open neck or to the chin: the stub is swapped back in for it. Homer's arms at 128
+// curl on into the fingers past where 64 ends them: they are cut back there. Every end
+// point at 128 then lies near one at 64 (within the tolerance, 4 voxels of the default
+// grid), and the two heads have as many joints as at 64.
 BOOST_AUTO_TEST_CASE(a_finer_grid_ends_where_the_default_one_does)
 {
-  const Rigs_at_64_and_128 lion = rigs_at_64_and_128(test::demo_mesh<Mesh>("lion.off"));
-  const double tolerance = 4 * lion.coarse.voxel_size;
-  BOOST_TEST(!end_points_of(lion.at_128).empty());
-  BOOST_TEST(farthest_end_point_from(lion.at_128, lion.at_64) <= tolerance);
-  BOOST_TEST(farthest_end_point_from(lion.every_branch_at_128, lion.at_64) > tolerance);
-  BOOST_TEST(lion.coarse.pruning.cut_back_branches == 0u);
-  BOOST_TEST(lion.fine.pruning.cut_back_branches >= 1u);
-  BOOST_TEST(lion.fine.pruning.cut_back_points > lion.fine.pruning.cut_back_branches);
-  BOOST_TEST(num_vertices(lion.at_128) == num_vertices(lion.at_64));
+  for(const char* name : {"lion.off", "head.off", "homer.off"})
+  {
+    BOOST_TEST_CONTEXT(name)
+    {
+      const Rigs_at_64_and_128 rigs = rigs_at_64_and_128(test::demo_mesh<Mesh>(name));
+      const double tolerance = 4 * rigs.coarse.voxel_size;
+      BOOST_TEST(!end_points_of(rigs.at_128).empty());
+      BOOST_TEST(farthest_end_point_from(rigs.at_128, rigs.at_64) <= tolerance);
+      BOOST_TEST(farthest_end_point_from(rigs.every_branch_at_128, rigs.at_64) > tolerance);
+      BOOST_TEST(rigs.coarse.pruning.cut_back_branches == 0u);
+      BOOST_TEST(rigs.coarse.pruning.swapped_for_coarse_end_branches == 0u);
+      if(std::string(name) == "homer.off")
+      {
+        BOOST_TEST(rigs.fine.pruning.cut_back_branches >= 2u);
+        BOOST_TEST(rigs.fine.pruning.cut_back_points > rigs.fine.pruning.cut_back_branches);
+      }
+      else
+      {
+        BOOST_TEST(rigs.fine.pruning.swapped_for_coarse_end_branches >= 1u);
+        BOOST_TEST(num_vertices(rigs.at_128) == num_vertices(rigs.at_64));
+      }
+    }
+  }
 }
 
 BOOST_AUTO_TEST_CASE(a_finer_grid_keeps_the_end_points_of_the_default_one)

@@ -577,6 +577,59 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(an_end_branch_is_cut_back_to_where_the_coarser_ske
   BOOST_TEST(to_the_first.count(Voxel_key{5, 0, 0}) == 0u);
 }
 
+// Four straight arms from a junction voxel at the origin: 8 voxels along +x, -x and -y,
+// and a stub of 2 voxels along +y that the snipping takes.
+std::vector<Voxel_key> plus_with_a_stub()
+{
+  std::vector<Voxel_key> v{Voxel_key{0, 0, 0}};
+  add_segment(v, Voxel_key{1, 0, 0}, Voxel_key{1, 0, 0}, 8);
+  add_segment(v, Voxel_key{-1, 0, 0}, Voxel_key{-1, 0, 0}, 8);
+  add_segment(v, Voxel_key{0, -1, 0}, Voxel_key{0, -1, 0}, 8);
+  add_segment(v, Voxel_key{0, 1, 0}, Voxel_key{0, 1, 0}, 2);
+  return v;
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(a_snipped_branch_that_the_coarser_skeleton_ends_in_is_swapped_back_in, VoxelSet,
+                              Voxel_set_models)
+{
+  const auto radius = CGAL::Constant_property_map<Voxel_key, double>(3.0);
+  auto pruned_with = [&](const std::vector<std::array<double, 3>>* coarse) {
+    VoxelSet skeleton = voxel_set<VoxelSet>(plus_with_a_stub());
+    const gs::Pruning_report report = gs::prune_skeleton(
+        skeleton, gs::parameters::combine(gs::parameters::mat_radius_map(radius),
+                                          gs::parameters::coarse_end_points(coarse),
+                                          gs::parameters::coarse_end_point_tolerance(2.0)));
+    return std::make_pair(contents(skeleton), report);
+  };
+  const Voxel_key tip_of_stub{0, 2, 0}, tip_of_minus_y_arm{0, -8, 0};
+
+  // Alone, the stub is snipped (shorter than 1.2 radii) and the -y arm stays.
+  const auto [alone, alone_report] = pruned_with(nullptr);
+  BOOST_TEST(alone.count(tip_of_stub) == 0u);
+  BOOST_TEST(alone.count(tip_of_minus_y_arm) == 1u);
+  BOOST_TEST(alone_report.swapped_for_coarse_end_branches == 0u);
+
+  // The coarser skeleton ends in the stub and has no -y arm: as many end points, but not the
+  // same ones. The stub comes back and the -y arm goes, all of it.
+  const std::vector<std::array<double, 3>> stub_and_x_arms{tip_of_plus_x_arm, tip_of_minus_x_arm, {0.5, 2.5, 0.5}};
+  const auto [swapped, swapped_report] = pruned_with(&stub_and_x_arms);
+  BOOST_TEST(swapped.count(tip_of_stub) == 1u);
+  BOOST_TEST(swapped.count(Voxel_key{0, 1, 0}) == 1u);
+  for(int y = -8; y <= -1; ++y)
+    BOOST_TEST(swapped.count(Voxel_key{0, y, 0}) == 0u);
+  BOOST_TEST(swapped_report.swapped_for_coarse_end_branches == 1u);
+  BOOST_TEST(swapped_report.snipped_beyond_coarse_detail == 0u);
+  BOOST_TEST(components_of(swapped) == 1u);
+
+  // When the coarser skeleton has the -y arm too, every end point matches: no swap, the
+  // stub stays snipped.
+  const std::vector<std::array<double, 3>> all_four{tip_of_plus_x_arm, tip_of_minus_x_arm, {0.5, 2.5, 0.5},
+                                                    {0.5, -7.5, 0.5}};
+  const auto [kept, kept_report] = pruned_with(&all_four);
+  BOOST_TEST((kept == alone));
+  BOOST_TEST(kept_report.swapped_for_coarse_end_branches == 0u);
+}
+
 BOOST_AUTO_TEST_CASE(absurd_parameters_give_clear_exceptions)
 {
   gs::Sparse_voxel_set skeleton = voxel_set<gs::Sparse_voxel_set>(thick_junction_with_three_arms());

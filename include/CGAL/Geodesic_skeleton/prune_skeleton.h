@@ -12,6 +12,7 @@
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
 #include <CGAL/Geodesic_skeleton/internal/prune/branched_regions.h>
+#include <CGAL/Geodesic_skeleton/internal/prune/coarse_end_branch_swaps.h>
 #include <CGAL/Geodesic_skeleton/internal/prune/coarse_end_points.h>
 #include <CGAL/Geodesic_skeleton/internal/prune/spurious_branches.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
@@ -39,6 +40,9 @@ struct Pruning_report
   std::size_t rounds = 0;                    ///< rounds of pruning and snipping that changed something
   /// end branches snipped because a coarser skeleton does not have them (`coarse_end_points`)
   std::size_t snipped_beyond_coarse_detail = 0;
+  /// end branches that a coarser skeleton does not have, each swapped for a branch snipped
+  /// at the same junction that it ends in (`coarse_end_points`)
+  std::size_t swapped_for_coarse_end_branches = 0;
   /// end branches cut back to a coarse end point that they ran on past (`coarse_end_points`)
   std::size_t cut_back_branches = 0;
   std::size_t cut_back_points = 0;           ///< voxels of those branches removed so
@@ -71,7 +75,12 @@ struct Pruning_report
 /// end point, detail that the finer grid resolves and the coarser one does not (the
 /// corners of a block, which a coarser grid merges into fewer branches), is judged with
 /// both thresholds 3 times larger (`unmatched_threshold_factor`), and each one snipped so
-/// counts against the surplus of end points. Last, each end branch is cut back to where the
+/// counts against the surplus of end points. Then, while the skeleton has an end point that
+/// no coarse end point is near and the coarser skeleton one that no end point is near, a
+/// branch snipped earlier whose tip is near the latter is swapped back in for an end branch
+/// at the same junction whose tip no coarse end point is near (as many end points are not
+/// the same ones: of a junction's short branches, the finer grid may snip the one the
+/// coarser skeleton ends in). Last, each end branch is cut back to where the
 /// coarser skeleton ends (a finer grid carries a branch further, into a hoof's curl, the
 /// fingers of a hand, an open neck): to its voxel nearest the coarse end point nearest its
 /// tip, when one is within the tolerance of the tip, else nearest the first coarse end point
@@ -165,7 +174,8 @@ struct Pruning_report
 /// more and the tip of each end branch is compared with each coarse end point: O(E C) more
 /// per round for E end branches; cutting back traces the graph again after each of the K
 /// branches it cuts (K <= C) and compares the voxels of the end branches with the coarse end
-/// points: O(K N (log N + C)) more.
+/// points: O(K N (log N + C)) more; the swaps trace the graph again for each of the S branches
+/// snipped that they try: O(S N log N) more, and O(N) memory for the branches snipped.
 template <typename VoxelSet, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Pruning_report prune_skeleton(VoxelSet& skeleton,
                               const NamedParameters& np = CGAL::parameters::default_values())
@@ -219,6 +229,10 @@ Pruning_report prune_skeleton(VoxelSet& skeleton,
   internal::Spur_thresholds thresholds{factor, protrusion_factor, {}};
   if(protrusion_factor > 0)
     thresholds.largest_radius_of_piece = internal::largest_radius_of_pieces(skeleton, radius);
+  // With a coarser skeleton, the branches snipped are kept for swapping back in.
+  std::vector<internal::End_branch> snipped;
+  if(coarse_points != nullptr)
+    thresholds.snipped_branches = &snipped;
   Pruning_report report;
   auto prune_until_nothing_changes = [&](bool first_pass) {
     for(bool first = first_pass;; first = false)
@@ -258,6 +272,10 @@ Pruning_report prune_skeleton(VoxelSet& skeleton,
       prune_until_nothing_changes(false);
       report.snipped_beyond_coarse_detail = budget - guide.budget;
     }
+    // Then a branch snipped that the coarser skeleton ends in is swapped back in for one at
+    // the same junction that it does not have.
+    report.swapped_for_coarse_end_branches =
+        internal::swap_in_coarse_end_branches(skeleton, *coarse_points, tolerance, snipped);
     // Last, each end branch is cut back to where the coarser skeleton ends.
     const internal::Cut_back cut = internal::cut_back_to_coarse_end_points(skeleton, *coarse_points, tolerance);
     report.cut_back_branches = cut.branches;

@@ -34,6 +34,18 @@ std::vector<Voxel_key> graph_end_points(const VoxelSet& skeleton)
   return ends;
 }
 
+// The centre of voxel `k`, in grid coordinates.
+inline Vec3 centre_in_grid(const Voxel_key& k)
+{
+  return Vec3{k.x + 0.5, k.y + 0.5, k.z + 0.5};
+}
+
+// Whether the coarse end point `p` is within `squared_tolerance` of the centre of `k`.
+inline bool is_near(const std::array<double, 3>& p, const Voxel_key& k, double squared_tolerance)
+{
+  return squared_distance3(p, centre_in_grid(k)) <= squared_tolerance;
+}
+
 // How much larger the snipping's thresholds are for an end branch that the coarser
 // skeleton does not have: 3 times the default level of detail (0.75 of the body's thickness)
 // is more than 2 thicknesses, more than the corner branches of a block reach out, and less
@@ -56,11 +68,8 @@ struct Coarse_end_point_guide
 
   bool has_match_near(const Voxel_key& tip) const
   {
-    const Vec3 centre{tip.x + 0.5, tip.y + 0.5, tip.z + 0.5};
-    for(const Vec3& p : points)
-      if(squared_distance3(p, centre) <= tolerance * tolerance)
-        return true;
-    return false;
+    return std::any_of(points.begin(), points.end(),
+                       [&](const Vec3& p) { return is_near(p, tip, tolerance * tolerance); });
   }
 
   // The factor of the snipping's thresholds for the end branch whose tip is `tip`.
@@ -132,10 +141,7 @@ bool cut_back_one_end_branch(VoxelSet& skeleton, const std::vector<std::array<do
 {
   const Skeleton_adjacency graph = skeleton_adjacency(skeleton);
   const std::vector<std::vector<int>> around = neighbours_of_nodes(graph);
-  const auto centre = [&](int v) {
-    const Voxel_key& k = graph.nodes[std::size_t(v)];
-    return Vec3{k.x + 0.5, k.y + 0.5, k.z + 0.5};
-  };
+  const auto centre = [&](int v) { return centre_in_grid(graph.nodes[std::size_t(v)]); };
   const double squared_tolerance = tolerance * tolerance;
   std::vector<int> ends;
   for(int v = 0; v < int(graph.nodes.size()); ++v)

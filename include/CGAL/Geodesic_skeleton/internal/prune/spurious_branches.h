@@ -187,6 +187,8 @@ struct Spur_thresholds
   double spur_length_factor = 0;
   double limb_protrusion_factor = 0;
   Coarse_end_point_guide* coarse = nullptr;
+  // When set, receives every end branch snipped, in the order they go.
+  std::vector<End_branch>* snipped_branches = nullptr;
   // The largest radius of the piece of the skeleton each voxel is in.
   std::unordered_map<Voxel_key, double, Voxel_key_hash> largest_radius_of_piece;
 };
@@ -321,9 +323,10 @@ std::vector<End_branch> spurs_among(std::vector<End_branch> branches, const Radi
 }
 
 // Snips the `spurs` in their order, each one that `may_snip(spur)`, asked after the snips
-// before it, allows, and tells the `coarse` guide, if any.
+// before it, allows, and tells the `thresholds`' coarse guide and record of snipped
+// branches, if any.
 template <typename VoxelSet, typename MaySnip>
-Snipping snip_in_order(VoxelSet& skeleton, const std::vector<End_branch>& spurs, Coarse_end_point_guide* coarse,
+Snipping snip_in_order(VoxelSet& skeleton, const std::vector<End_branch>& spurs, const Spur_thresholds& thresholds,
                        MaySnip may_snip)
 {
   Snipping result;
@@ -331,8 +334,10 @@ Snipping snip_in_order(VoxelSet& skeleton, const std::vector<End_branch>& spurs,
   {
     if(!may_snip(spur))
       continue;
-    if(coarse && spur.beyond_coarse_detail)
-      coarse->snipped();
+    if(thresholds.coarse && spur.beyond_coarse_detail)
+      thresholds.coarse->snipped();
+    if(thresholds.snipped_branches)
+      thresholds.snipped_branches->push_back(spur);
     for(const Voxel_key& k : spur.voxels)
       skeleton.erase(k);
     ++result.branches;
@@ -362,7 +367,7 @@ Snipping snip_spurious_branches_once(VoxelSet& skeleton, const Radii& radii, con
       branches.push_back(std::move(branch));
   }
   const Covering_balls balls(skeleton, radii.ball);
-  return snip_in_order(skeleton, spurs_among(std::move(branches), radii, thresholds, skeleton, balls), thresholds.coarse,
+  return snip_in_order(skeleton, spurs_among(std::move(branches), radii, thresholds, skeleton, balls), thresholds,
                        [&](const End_branch& spur) {
     // Earlier snips of this round may have changed this branch's junction, or removed the
     // balls that held it.
@@ -424,7 +429,7 @@ Snipping snip_spurious_graph_branches_once(VoxelSet& skeleton, const Radii& radi
   Graph_end_branches graph = graph_end_branches(skeleton);
   const Covering_balls balls(skeleton, radii.ball);
   return snip_in_order(skeleton, spurs_among(std::move(graph.branches), radii, thresholds, skeleton, balls),
-                       thresholds.coarse, [&](const End_branch& spur) {
+                       thresholds, [&](const End_branch& spur) {
     std::size_t& branches = graph.junction_degree[spur.junction];
     if(branches < 3 ||
        !(spuriousness_of(spur, radii, thresholds, skeleton, balls, threshold_factor(spur, thresholds)) < 1))
