@@ -26,6 +26,12 @@ inline Vec3 cross3(const Vec3& a, const Vec3& b)
 inline double norm3(const Vec3& a) { return std::sqrt(dot3(a, a)); }
 inline double squared_distance3(const Vec3& a, const Vec3& b) { return dot3(sub(a, b), sub(a, b)); }
 
+// `a` > `b` by more than rounding (one part in 10^9). Values computed from a mesh in world
+// coordinates (a bend, a distance) that are equal in exact arithmetic differ by the rounding
+// of the mesh's placement: a choice between them made with this test, ties to the first in
+// an order that the voxels fix, does not change with a rigid motion.
+inline bool clearly_greater(double a, double b) { return a > b + 1e-9 * (std::abs(a) + std::abs(b)); }
+
 // Distance from p to the segment [a, b].
 inline double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b)
 {

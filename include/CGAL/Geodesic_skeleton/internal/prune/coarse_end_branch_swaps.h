@@ -57,9 +57,7 @@ bool swap_one_end_branch(VoxelSet& skeleton, std::size_t end_points,
   for(std::size_t b = snipped.size(); b-- > 0;)
   {
     const End_branch& back = snipped[b];
-    if(tried[b] ||
-       std::none_of(unmatched_coarse.begin(), unmatched_coarse.end(),
-                    [&](const std::array<double, 3>& p) { return is_near(p, back.voxels.front(), squared_tolerance); }) ||
+    if(tried[b] || !is_near_any(unmatched_coarse, back.voxels.front(), squared_tolerance) ||
        std::any_of(back.voxels.begin(), back.voxels.end(), [&](const Voxel_key& k) { return skeleton.contains(k); }))
       continue;
     tried[b] = true;
@@ -112,10 +110,7 @@ std::size_t swap_in_coarse_end_branches(VoxelSet& skeleton, const std::vector<st
                                         double tolerance, const std::vector<End_branch>& snipped)
 {
   const double squared_tolerance = tolerance * tolerance;
-  auto unmatched = [&](const Voxel_key& end) {
-    return std::none_of(coarse.begin(), coarse.end(),
-                        [&](const std::array<double, 3>& p) { return is_near(p, end, squared_tolerance); });
-  };
+  auto unmatched = [&](const Voxel_key& end) { return !is_near_any(coarse, end, squared_tolerance); };
   std::vector<bool> tried(snipped.size(), false);
   std::size_t swaps = 0;
   while(true)

@@ -46,6 +46,15 @@ inline bool is_near(const std::array<double, 3>& p, const Voxel_key& k, double s
   return squared_distance3(p, centre_in_grid(k)) <= squared_tolerance;
 }
 
+// Whether one of the coarse end points `points` is within `squared_tolerance` of the centre
+// of `k`.
+inline bool is_near_any(const std::vector<std::array<double, 3>>& points, const Voxel_key& k,
+                        double squared_tolerance)
+{
+  return std::any_of(points.begin(), points.end(),
+                     [&](const std::array<double, 3>& p) { return is_near(p, k, squared_tolerance); });
+}
+
 // How much larger the snipping's thresholds are for an end branch that the coarser
 // skeleton does not have: 3 times the default level of detail (0.75 of the body's thickness)
 // is more than 2 thicknesses, more than the corner branches of a block reach out, and less
@@ -68,8 +77,7 @@ struct Coarse_end_point_guide
 
   bool has_match_near(const Voxel_key& tip) const
   {
-    return std::any_of(points.begin(), points.end(),
-                       [&](const Vec3& p) { return is_near(p, tip, tolerance * tolerance); });
+    return is_near_any(points, tip, tolerance * tolerance);
   }
 
   // The factor of the snipping's thresholds for the end branch whose tip is `tip`.
@@ -93,18 +101,12 @@ struct Cut_back
   std::size_t points = 0;   // voxels removed
 };
 
-// `a` < `b` by more than rounding. The coarse end points are converted from the coarser
-// grid's frame, and a coarse voxel centre falls on the face between two voxels of a grid
-// twice as fine: the two are equally near it, and the rounding of a moved mesh would pick
-// either.
-inline bool clearly_nearer(double a, double b)
-{
-  return a < b - 1e-9 * (a + b);
-}
-
 // The index in `branch` (voxel centres `centre(branch[i])`) of the voxel nearest `point`
-// among all but the last one, if one is within `squared_tolerance`; ties to rounding go to
-// the first, nearest the tip. `branch.size()` when none is.
+// among all but the last one, if one is within `squared_tolerance`; ties to rounding
+// (clearly_greater()) go to the first, nearest the tip. The coarse end points are
+// converted from the coarser grid's frame, and a coarse voxel centre falls on the face
+// between two voxels of a grid twice as fine: the two are equally near it, and the rounding
+// of a moved mesh would pick either. `branch.size()` when none is.
 template <typename Centre>
 std::size_t nearest_branch_voxel(const std::vector<int>& branch, const Vec3& point, double squared_tolerance,
                                  const Centre& centre)
@@ -114,7 +116,7 @@ std::size_t nearest_branch_voxel(const std::vector<int>& branch, const Vec3& poi
   for(std::size_t i = 0; i + 1 < branch.size(); ++i)
   {
     const double d = squared_distance3(point, centre(branch[i]));
-    if(d <= squared_tolerance && (nearest == branch.size() || clearly_nearer(d, nearest_distance)))
+    if(d <= squared_tolerance && (nearest == branch.size() || clearly_greater(nearest_distance, d)))
     {
       nearest = i;
       nearest_distance = d;
@@ -160,7 +162,7 @@ bool cut_back_one_end_branch(VoxelSet& skeleton, const std::vector<std::array<do
       if(d > squared_tolerance)
         continue;
       coarse_matched[c] = true;
-      if(match[e] == coarse.size() || clearly_nearer(d, nearest))
+      if(match[e] == coarse.size() || clearly_greater(nearest, d))
       {
         match[e] = c;
         nearest = d;

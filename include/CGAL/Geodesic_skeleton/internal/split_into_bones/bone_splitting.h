@@ -69,14 +69,10 @@ public:
   }
 
 private:
-  // `a` > `b` by more than rounding. The branch's points come from the curve skeleton in
-  // world coordinates, so a mirror-symmetric branch has pairs of points whose bends or
-  // deviations are equal up to the rounding of the mesh's placement: the first of such a
-  // pair (in the branch's order, which the voxels fix) wins, whatever the rigid motion.
-  static bool clearly_greater(double a, double b)
-  {
-    return a > b + 1e-9 * (std::abs(a) + std::abs(b));
-  }
+  // The branch's points come from the curve skeleton in world coordinates, so a
+  // mirror-symmetric branch has pairs of points whose bends or deviations are equal up to
+  // the rounding of the mesh's placement: the first of such a pair (in the branch's order,
+  // which the voxels fix) wins, by clearly_greater(), whatever the rigid motion.
 
   double mean_radius(std::size_t i, std::size_t j) const
   {
