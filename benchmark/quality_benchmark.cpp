@@ -43,6 +43,7 @@
 // stops.
 
 #include <CGAL/Geodesic_skeleton/extract_control_skeleton.h>
+#include <CGAL/Geodesic_skeleton/IO/read_mesh.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -71,6 +72,7 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -162,9 +164,17 @@ std::optional<Mesh> load_mesh(const std::string& name, const std::string& data_d
 {
   if(auto shape = synthetic_shapes.find(name); shape != synthetic_shapes.end())
     return shapes::mesh_of<Mesh>(shape->second());
+  // The package's reader, as skeletonize reads: it also takes the polygon soups among the
+  // demo meshes (the *-shuffled ones), which CGAL's read_polygon_mesh() refuses.
   Mesh mesh;
-  if(!CGAL::IO::read_polygon_mesh(data_dir + "/" + name + ".off", mesh) || num_faces(mesh) == 0)
+  try
+  {
+    CGAL::Geodesic_skeleton::IO::read_mesh(data_dir + "/" + name + ".off", mesh);
+  }
+  catch(const std::runtime_error&)
+  {
     return std::nullopt;
+  }
   return mesh;
 }
 
