@@ -419,6 +419,28 @@ BOOST_AUTO_TEST_CASE(a_long_straight_limb_is_cut_at_its_narrowings)
   BOOST_TEST(limb_bones == 3u);
 }
 
+// A straight part exactly twice the shortest bone long stays one bone, wherever it lies: an
+// arm of the demo cross aligned with the grid is 26 voxels long with a radius of 6.5, and it
+// used to be cut in two there by an exact tie, and kept whole at any other placement or at a
+// finer grid. A little longer, the part is cut in two.
+BOOST_AUTO_TEST_CASE(a_part_twice_the_shortest_bone_long_stays_whole)
+{
+  // Radius 1: the shortest bone is 2 radii (the default factor), the longest 3.
+  const Control aligned = bones_of(chain_skeleton(polyline({Point(0, 0, 0), Point(0, 0, 4)}, 0.25), 1.0));
+  BOOST_TEST(num_edges(aligned) == 1u);
+  check_tree(aligned);
+  // The same part along (1, 2, 2) / 3 from an arbitrary origin: its lengths are 4 up to rounding.
+  const Point origin(0.1, 0.7, -0.3);
+  const Kernel::Vector_3 along(4.0 / 3, 8.0 / 3, 8.0 / 3);
+  BOOST_TEST(num_edges(bones_of(chain_skeleton(polyline({origin, origin + along}, 0.25), 1.0))) == 1u);
+  BOOST_TEST(num_edges(bones_of(chain_skeleton(polyline({origin, origin + along * 1.125}, 0.25), 1.0))) == 2u);
+
+  const Control longer = bones_of(chain_skeleton(polyline({Point(0, 0, 0), Point(0, 0, 4.5)}, 0.25), 1.0));
+  BOOST_REQUIRE(num_edges(longer) == 2u);
+  for(const auto bone : boost::make_iterator_range(edges(longer)))
+    BOOST_TEST(longer[bone].length == 2.25, boost::test_tools::tolerance(1e-9));
+}
+
 BOOST_AUTO_TEST_CASE(an_l_shaped_tube_gives_two_bones_with_the_joint_at_the_corner)
 {
   const double radius = 1.5;

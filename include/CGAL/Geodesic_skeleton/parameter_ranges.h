@@ -88,14 +88,14 @@ inline constexpr Parameter_range smoothing_window{"smoothing_window", 1, 1001, 5
 inline constexpr Parameter_range bend_threshold{"bend_threshold", 0, 1, 0.08, false, false};
 /// `split_into_bones()`: allowed deviation of a bone from its chord, in MAT radii.
 inline constexpr Parameter_range straightness_tolerance{"straightness_tolerance", 0, 100, 0.5, false, false};
-/// `split_into_bones()`: the shortest bone, in MAT radii.
+/// `split_into_bones()`: every bone is longer than this, in MAT radii.
 inline constexpr Parameter_range minimum_bone_length_factor{"minimum_bone_length_factor", 0, 1000, 2.0,
                                                             false, false};
 /// `split_into_bones()`: a straight bone longer than this many times the largest MAT radius
 /// of its piece is cut into equal bones at its narrowings (0: no limit).
 inline constexpr Parameter_range maximum_bone_length_factor{"maximum_bone_length_factor", 0, 1000, 3.0,
                                                             false, false};
-/// `split_into_bones()`: the shortest bone, in largest MAT radii of its piece: the rig's
+/// `split_into_bones()`: every bone is longer than this, in largest MAT radii of its piece: the rig's
 /// level of detail, whatever the grid resolves (0: no such floor).
 inline constexpr Parameter_range minimum_bone_length_of_piece_factor{"minimum_bone_length_of_piece_factor", 0, 1000,
                                                                      0.5, false, false};

@@ -215,11 +215,12 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 /// The end points and junctions of the curve skeleton are the initial joints; each branch
 /// between them is split recursively where the chord-to-point distance accumulation
 /// (`chord_to_point_distance_accumulation()`) peaks at `bend_threshold` or more, or where
-/// it strays from its chord by more than `straightness_tolerance` MAT radii, never leaving
-/// a bone shorter than `minimum_bone_length_factor` MAT radii (each radius taken as at least
+/// it strays from its chord by more than `straightness_tolerance` MAT radii, leaving only
+/// bones longer than `minimum_bone_length_factor` MAT radii (each radius taken as at least
 /// `smallest_radius`, and as at least the sheet's half width where a `sheet_half_width_map`
-/// gives one), nor shorter than `minimum_bone_length_of_piece_factor` times the largest MAT
-/// radius of its connected component (the rig's level of detail); a straight bone longer than
+/// gives one) and longer than `minimum_bone_length_of_piece_factor` times the largest MAT
+/// radius of its connected component (the rig's level of detail), clearly longer: a part
+/// exactly twice that length stays whole, whatever the rounding; a straight bone longer than
 /// `maximum_bone_length_factor` times the largest MAT radius of its connected component
 /// (the body's thickness; a straight limb has no bend to cut at) is cut
 /// into bones of about equal length, each cut at the narrowest point near its
@@ -282,8 +283,8 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 ///     \cgalParamDefault{0.5}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{minimum_bone_length_factor}
-///     \cgalParamDescription{the shortest bone a split may leave, in MAT radii, in
-///                           [0, 1000] (package parameter)}
+///     \cgalParamDescription{the length, in MAT radii, that every bone a split leaves is
+///                           longer than, in [0, 1000] (package parameter)}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{2}
 ///   \cgalParamNEnd
@@ -299,8 +300,8 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 ///     \cgalParamDefault{3}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{minimum_bone_length_of_piece_factor}
-///     \cgalParamDescription{the shortest bone a split may leave, in units of the largest
-///                           MAT radius of its connected component of the skeleton (R), in
+///     \cgalParamDescription{the length that every bone a split leaves is longer than, in
+///                           units of the largest MAT radius of its connected component of the skeleton (R), in
 ///                           [0, 1000]: the rig's level of detail. Near a tip the MAT radius is
 ///                           small and a finer grid resolves bends there that a coarser one
 ///                           smooths away; bones shorter than a fraction of the body's

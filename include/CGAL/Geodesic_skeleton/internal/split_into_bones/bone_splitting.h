@@ -94,6 +94,12 @@ private:
     return (std::max)(m_settings.minimum_bone_length_factor * radius, m_shortest_of_piece);
   }
 
+  // Whether a bone `length` long is longer than the shortest bone: clearly, so that a part
+  // exactly twice the shortest bone long, which a shape aligned with the grid gives (an
+  // arm of a cross 26 voxels long with a radius of 6.5), stays whole whatever the rounding,
+  // as it does at any other placement of the shape.
+  static bool longer_than_shortest(double length, double shortest) { return clearly_greater(length, shortest); }
+
   // Appends the inner cut points of [i, j] to `cuts`, in increasing order.
   void split(std::size_t i, std::size_t j, std::vector<std::size_t>& cuts)
   {
@@ -101,10 +107,10 @@ private:
       return;
     const double radius = mean_radius(i, j);
     const double shortest = shortest_bone(radius);
-    // Candidates: the inner points that leave both parts at least `shortest` long.
+    // Candidates: the inner points that leave both parts longer than `shortest`.
     std::vector<std::size_t> candidates;
     for(std::size_t k = i + 1; k < j; ++k)
-      if(m_s[k] - m_s[i] >= shortest && m_s[j] - m_s[k] >= shortest)
+      if(longer_than_shortest(m_s[k] - m_s[i], shortest) && longer_than_shortest(m_s[j] - m_s[k], shortest))
         candidates.push_back(k);
     if(candidates.empty())
       return;
@@ -157,7 +163,7 @@ private:
   // largest MAT radius of the piece: the body's thickness, so that a thin limb gets as
   // many bones as a thick one of the same length): cut it into n bones of about equal
   // length, n the fewest that are short enough (at most `most_bones_per_straight_part`, and
-  // no more than leave each bone `shortest` long, the part's shortest_bone()), each cut at
+  // few enough that each is longer than `shortest`, the part's shortest_bone()), each cut at
   // the narrowest point (the smallest MAT radius, where an elbow, a knee or a wrist is)
   // within a quarter of a bone's length of its equal-length position, ties to the nearest
   // that position.
@@ -168,8 +174,8 @@ private:
     if(!(longest > 0) || length <= longest)
       return;
     double bones = std::min(std::ceil(length / longest), double(most_bones_per_straight_part));
-    if(shortest > 0)
-      bones = std::min(bones, std::floor(length / shortest));
+    while(bones > 1 && !longer_than_shortest(length / bones, shortest))
+      --bones;
     const std::size_t n = bones >= 2 ? std::size_t(bones) : 1;
     const double bone = length / double(n);
     std::size_t previous = i;
@@ -179,7 +185,8 @@ private:
       std::size_t best = j;
       for(std::size_t k = previous + 1; k < j; ++k)
       {
-        if(std::abs(m_s[k] - target) > bone / 4 || m_s[k] - m_s[previous] < shortest || m_s[j] - m_s[k] < shortest)
+        if(std::abs(m_s[k] - target) > bone / 4 || !longer_than_shortest(m_s[k] - m_s[previous], shortest) ||
+           !longer_than_shortest(m_s[j] - m_s[k], shortest))
           continue;
         if(best == j || m_r[k] < m_r[best] ||
            (m_r[k] == m_r[best] && std::abs(m_s[k] - target) < std::abs(m_s[best] - target)))
