@@ -1,6 +1,7 @@
 // quality_benchmark: what the control skeletons look like, in numbers, on the closed demo
-// meshes that are characters or animals and on four synthetic shapes (a thin plate, a
-// winged body, a T-pose figure, a six-armed star with nearly equal principal axes:
+// meshes that are characters or animals and on five synthetic shapes (a thin plate, a
+// winged body, a T-pose figure, the same wearing an open cape, a six-armed star with nearly
+// equal principal axes:
 // test/include/Geodesic_skeleton_test/characters.h), at
 // several resolutions. Per mesh and resolution, one run of extract_control_skeleton():
 //   - end points and junctions: joints of degree 1 and of degree >= 3 (the degree counts
@@ -39,8 +40,8 @@
 //                     [--rigid-motions N] [--radii-on-mesh] [--write-shapes DIR]
 //
 // --write-shapes DIR writes the synthetic shapes to DIR/plate.off, DIR/winged_body.off,
-// DIR/t_pose_figure.off and DIR/six_armed_star.off (to look at them with skeletonize) and
-// stops.
+// DIR/t_pose_figure.off, DIR/caped_figure.off, DIR/six_armed_star.off and
+// DIR/thin_capsule.off (to look at them with skeletonize) and stops.
 
 #include <CGAL/Geodesic_skeleton/extract_control_skeleton.h>
 #include <CGAL/Geodesic_skeleton/IO/read_mesh.h>
@@ -96,7 +97,7 @@ struct Options
   std::string data_dir = GEODESIC_SKELETON_DATA_DIR;
   std::vector<std::string> names = {"cow", "elephant", "dino",  "camel",   "horse",       "armadillo",    "man",
                                     "bunny", "hand",   "octopus", "plate", "winged_body", "t_pose_figure",
-                                    "six_armed_star"};
+                                    "caped_figure", "six_armed_star"};
   std::vector<int> resolutions = {48, 64, 96, 128};
   int rigid_motions = 0;
   bool radii_on_mesh = false;
@@ -157,6 +158,7 @@ const std::map<std::string, shapes::Soup (*)()> synthetic_shapes = {
     {"plate", shapes::plate},
     {"winged_body", shapes::winged_body},
     {"t_pose_figure", shapes::t_pose_figure},
+    {"caped_figure", shapes::caped_figure},
     {"six_armed_star", shapes::six_armed_star}};
 
 // A synthetic shape, or DATA_DIR/NAME.off; nothing when neither exists.

@@ -321,6 +321,46 @@ BOOST_AUTO_TEST_CASE(a_wing_gets_a_few_joints_whatever_the_resolution)
              *std::max_element(joints_per_wing.begin(), joints_per_wing.end()));
 }
 
+// A cape made as game artists make it: one open sheet of quads whose top edge runs into the
+// torso of the T-pose figure (characters.h). Its rim is not a hole: closed by a fan, it made
+// a second layer beside the cape and a lens of volume between them, whose skeleton forked
+// at the hem (14 end points at 64, 9 more than the figure alone). The cape is a sheet of
+// surface voxels; the rig is the figure's five end points and one chain down the middle of
+// the cape into its lowest third, at every resolution. Like the end of a strip, whose medial
+// axis forks to the two corners half its width from the edge, the chain may end towards a
+// corner of the hem.
+BOOST_AUTO_TEST_CASE(a_cape_made_of_one_sheet_gets_one_chain_down_its_middle)
+{
+  const Mesh mesh = test::mesh_of<Mesh>(test::caped_figure());
+  for(int resolution : {64, 96, 128})
+  {
+    BOOST_TEST_CONTEXT("resolution " << resolution)
+    {
+      Control control;
+      gs::extract_control_skeleton(mesh, control, params::resolution(resolution));
+      std::size_t ends = 0, ends_on_the_cape = 0, joints_on_the_cape = 0;
+      for(const auto& j : test::joints(control))
+      {
+        const bool end = j.kind == gs::Joint_kind::end;
+        ends += end ? 1 : 0;
+        if(j.point.y() >= -0.2) // the torso's radius is 0.16: behind it is the cape
+          continue;
+        ++joints_on_the_cape;
+        if(end)
+        {
+          ++ends_on_the_cape;
+          BOOST_TEST(j.point.z() < 0.72, "the cape's end at z = " << j.point.z()); // hem at 0.35, top at 1.45
+        }
+        else // half width 0.25
+          BOOST_TEST(std::abs(j.point.x()) < 0.1, "a joint on the cape at x = " << j.point.x());
+      }
+      BOOST_TEST(ends == 6u);
+      BOOST_TEST(ends_on_the_cape == 1u);
+      BOOST_TEST(joints_on_the_cape >= 2u);
+    }
+  }
+}
+
 BOOST_AUTO_TEST_CASE(remove_small_pieces_removes_exactly_the_small_ones)
 {
   // Three balls of radius 1, 0.5 and 0.2: at fraction 0.05 only the smallest (0.8 % of the

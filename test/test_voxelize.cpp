@@ -170,6 +170,36 @@ BOOST_AUTO_TEST_CASE(holes_are_closed)
                     std::invalid_argument);
 }
 
+// The rim of a sheet is not a hole. A cape made as one layer of faces (characters.h) has
+// one border cycle, whose fan is about as large as the cape: closed, it made a second layer
+// a few voxels off the cape and a lens of volume between them, which thinned to a fork at
+// the hem. A hole is small beside the component it opens (the tube's ends, a few faces of
+// the torso missing): it is closed. When every component is a sheet (the cape alone), every
+// rim is closed, as before: the only way such a mesh encloses some volume.
+BOOST_AUTO_TEST_CASE(the_rim_of_a_sheet_is_not_closed_unless_every_component_is_a_sheet)
+{
+  // The fan triangles voxelize() rasterised: the triangles beyond the faces' own.
+  const auto fan_triangles = [](const Mesh& mesh) {
+    gs::Sparse_voxel_set voxels;
+    gs::Voxelized_surface surface;
+    gs::voxelize(mesh, voxels, gs::parameters::voxelized_surface_output(&surface));
+    std::size_t face_triangles = 0;
+    for(auto f : faces(mesh))
+      face_triangles += degree(f, mesh) - 2;
+    return surface.number_of_triangles() - face_triangles;
+  };
+  BOOST_TEST(fan_triangles(mesh_of(test::caped_figure())) == 0u);
+  BOOST_TEST(fan_triangles(mesh_of(test::cape())) == 2u * (20u + 44u)); // its rim, closed
+  BOOST_TEST(fan_triangles(mesh_of(test::cylinder(1., 6., 32, 40, false))) == 2u * 32u);
+
+  // Two faces of the torso missing: their hole is closed, the cape's rim is not.
+  test::Soup holed = test::caped_figure();
+  holed.faces.erase(holed.faces.begin() + 40, holed.faces.begin() + 42);
+  const std::size_t fans = fan_triangles(mesh_of(holed));
+  BOOST_TEST(fans >= 3u);
+  BOOST_TEST(fans <= 6u);
+}
+
 BOOST_AUTO_TEST_CASE(a_closed_plate_under_two_voxels_thick_is_solid)
 {
   // The plate (1.0 x 0.6, 0.03 thick) is 1.4 to 1.9 voxels thick at these resolutions: its

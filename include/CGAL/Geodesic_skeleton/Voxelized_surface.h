@@ -177,7 +177,7 @@ public:
       const Grid_line_crossings& lines = (*this)();
       if(lines.of_a_mesh())
       {
-        std::vector<std::uint32_t> parts = internal::triangle_parts(m_mesh, m_fill_holes, vertex_components());
+        std::vector<std::uint32_t> parts = internal::triangle_parts(m_mesh, m_vpm, m_fill_holes, vertex_components());
         if(parts.size() == lines.triangles().size())
           m_parts = std::move(parts);
       }

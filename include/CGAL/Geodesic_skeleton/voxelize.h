@@ -48,7 +48,10 @@ namespace Geodesic_skeleton {
 /// the moved mesh. Every voxel that a face touches is marked and the outside is
 /// flood-filled from the border of the grid; the rest is the solid, which contains the
 /// whole mesh and sticks out of it by up to a voxel. Each hole of an open mesh is closed
-/// by a fan for the rasterisation. The method (the principal frame, the rasterisation, the
+/// by a fan for the rasterisation, but the rim of a sheet (a cape or a wing made as one
+/// layer of faces: a border cycle whose fan has at least 3/4 of the area of its connected
+/// component), which stays open, its sheet the layer of voxels its faces touch, unless
+/// every component has such a rim. The method (the principal frame, the rasterisation, the
 /// peeling of `keep_surface_voxels(false)` with its guarantees and limits, open meshes) is
 /// described in the manual, section \ref manual_voxelize.
 ///
@@ -79,8 +82,9 @@ namespace Geodesic_skeleton {
 ///     \cgalParamDefault{`default_voxel_resolution`, 64}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{fill_holes}
-///     \cgalParamDescription{whether the border cycles of the mesh are closed by fans
-///                           before rasterising (package parameter)}
+///     \cgalParamDescription{whether the border cycles of the mesh (but the rims of
+///                           sheets, as above) are closed by fans before rasterising
+///                           (package parameter)}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd

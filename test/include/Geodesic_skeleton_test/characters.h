@@ -1,5 +1,5 @@
 // Synthetic characters for the skeleton-quality benchmark: a thin plate, a winged body, a
-// humanoid in T-pose and a six-armed star. Each is a union of overlapping closed, outward-oriented pieces
+// humanoid in T-pose (also wearing an open cape) and a six-armed star. Each is a union of overlapping closed, outward-oriented pieces
 // (the union self-intersects; the package's voxelizer fills each closed piece), built from
 // shapes.h's soups. Units are arbitrary (about a metre for the figure).
 
@@ -174,6 +174,41 @@ inline Soup t_pose_figure()
     append(s, capsule({side * 0.12, 0, 1.42}, {side * 0.75, 0, 1.42}, 0.05)); // arm
     append(s, icosphere(0.065, 2), side * 0.82, 0, 1.42);                      // hand
   }
+  return s;
+}
+
+// A cape as game artists model it: one open sheet of quads, no thickness, 0.5 wide (x from
+// -0.25 to 0.25) and 1.1 long, from the shoulders (z = 1.45, where its top edge runs into
+// the torso, y = -0.12 at its middle) down to the knees (z = 0.35), hanging back from the
+// body by up to 0.25 at the hem and curved across, its side edges 0.08 nearer the body than
+// its middle line. An animator wants one chain down its middle.
+inline Soup cape()
+{
+  const int across = 20, down = 44;
+  Soup s;
+  for(int i = 0; i <= down; ++i)
+  {
+    const double t = double(i) / down;
+    for(int j = 0; j <= across; ++j)
+    {
+      const double x = -0.25 + 0.5 * j / across;
+      s.add_point(x, -0.12 - 0.25 * std::pow(t, 0.6) + 0.04 * (1 - std::cos(pi * x / 0.25)), 1.45 - 1.1 * t);
+    }
+  }
+  for(int i = 0; i < down; ++i)
+    for(int j = 0; j < across; ++j)
+    {
+      const std::size_t a = std::size_t(i * (across + 1) + j);
+      s.add_quad(a, a + 1, a + across + 2, a + across + 1);
+    }
+  return s;
+}
+
+// The T-pose figure wearing the cape: a closed body and an open sheet that runs into it.
+inline Soup caped_figure()
+{
+  Soup s = t_pose_figure();
+  append(s, cape());
   return s;
 }
 

@@ -197,8 +197,7 @@ std::size_t voxelize_impl(const FaceGraph& mesh, VoxelSet& voxels, const NamedPa
   Voxel_box box;
   const Voxel_frame frame = internal::grid_frame(triangles, resolution, 1, box, caller);
   const std::size_t mesh_triangle_count = triangles.size();
-  if(fill_holes)
-    internal::close_holes(mesh, vpm, triangles);
+  internal::close_holes(mesh, vpm, triangles, fill_holes);
   const internal::Grid_layout layout(box);
   internal::require_memory((keep_surface_voxels ? 6. : 11.) * double(layout.volume()),
                            internal::memory_limit(np), layout, caller,
