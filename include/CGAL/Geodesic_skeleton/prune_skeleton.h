@@ -230,9 +230,9 @@ Pruning_report prune_skeleton(VoxelSet& skeleton,
   if(protrusion_factor > 0)
     thresholds.largest_radius_of_piece = internal::largest_radius_of_pieces(skeleton, radius);
   // With a coarser skeleton, the branches snipped are kept for swapping back in.
-  std::vector<internal::End_branch> snipped;
+  std::vector<internal::End_branch> snipped_for_swaps;
   if(coarse_points != nullptr)
-    thresholds.snipped_branches = &snipped;
+    thresholds.snipped_branches = &snipped_for_swaps;
   Pruning_report report;
   auto prune_until_nothing_changes = [&](bool first_pass) {
     for(bool first = first_pass;; first = false)
@@ -275,7 +275,7 @@ Pruning_report prune_skeleton(VoxelSet& skeleton,
     // Then a branch snipped that the coarser skeleton ends in is swapped back in for one at
     // the same junction that it does not have.
     report.swapped_for_coarse_end_branches =
-        internal::swap_in_coarse_end_branches(skeleton, *coarse_points, tolerance, snipped);
+        internal::swap_in_coarse_end_branches(skeleton, *coarse_points, tolerance, snipped_for_swaps);
     // Last, each end branch is cut back to where the coarser skeleton ends.
     const internal::Cut_back cut = internal::cut_back_to_coarse_end_points(skeleton, *coarse_points, tolerance);
     report.cut_back_branches = cut.branches;

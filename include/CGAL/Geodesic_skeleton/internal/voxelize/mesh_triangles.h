@@ -143,9 +143,11 @@ inline double area_of(const Triangle3& t) { return 0.5 * norm3(cross3(sub(t[1], 
 // sheet_rim_fan_area_fraction of its component's area. When that leaves no component closed
 // (every component has the rim of a sheet: a cape alone, a curved patch), every cycle is,
 // as the only way such a mesh encloses some volume. Without `fill_holes`, none is.
-// O(V + F + H log H) for V vertices, F faces and H halfedges.
+// `known_components`, when given, are the mesh's vertex_components(); else they are computed
+// when a cycle needs them. O(V + F + H log H) for V vertices, F faces and H halfedges.
 template <typename FaceGraph, typename VertexPointMap>
-std::vector<Border_loop> border_loops(const FaceGraph& mesh, VertexPointMap vpm, bool fill_holes)
+std::vector<Border_loop> border_loops(const FaceGraph& mesh, VertexPointMap vpm, bool fill_holes,
+                                      const Vertex_components* known_components = nullptr)
 {
   const auto vim = CGAL::get_initialized_vertex_index_map(mesh);
   const auto point = [&](auto v) {
@@ -166,7 +168,10 @@ std::vector<Border_loop> border_loops(const FaceGraph& mesh, VertexPointMap vpm,
   if(loops.empty() || !fill_holes)
     return loops;
 
-  const Vertex_components components = vertex_components(mesh, vim);
+  std::optional<Vertex_components> computed_components;
+  if(known_components == nullptr)
+    computed_components = vertex_components(mesh, vim);
+  const Vertex_components& components = known_components ? *known_components : *computed_components;
   std::vector<double> area(components.count, 0.);
   std::vector<Vec3> corners;
   for(auto f : faces(mesh))
@@ -245,7 +250,7 @@ std::vector<std::uint32_t> triangle_parts(const FaceGraph& mesh, VertexPointMap 
     if(corners >= 3)
       parts.insert(parts.end(), corners - 2, part(target(halfedge(f, mesh), mesh)));
   }
-  for(const Border_loop& loop : border_loops(mesh, vpm, fill_holes))
+  for(const Border_loop& loop : border_loops(mesh, vpm, fill_holes, &components))
     if(loop.closed)
       parts.insert(parts.end(), loop.points.size(), std::uint32_t(component[loop.vertex]));
   return parts;
