@@ -478,11 +478,23 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(an_end_branch_that_a_coarser_skeleton_has_not_is_s
   BOOST_TEST(guided_report.snipped_beyond_coarse_detail == 1u);
   BOOST_TEST(components_of(guided) == 1u);
 
-  // A tolerance that takes in the +x arm's coarse end point (11.3 voxels away) keeps the y
-  // arm: not snipped (its tip matches that point, so it is only cut back towards it).
-  const auto [matched, matched_report] = pruned_with(&two_ends, 12.0);
+  // A tolerance that takes in the +x arm's coarse end point (11.7 voxels from the y arm's
+  // tip) does not keep the y arm: that point is paired with the +x arm's tip, on it, and
+  // vouches for no other branch.
+  const auto [paired_elsewhere, paired_elsewhere_report] = pruned_with(&two_ends, 12.0);
+  BOOST_TEST(paired_elsewhere.count(end_of_plus_y_arm) == 0u);
+  BOOST_TEST(paired_elsewhere.count(Voxel_key{8, 0, 0}) == 1u);
+  BOOST_TEST(paired_elsewhere.count(Voxel_key{-8, 0, 0}) == 1u);
+  BOOST_TEST(paired_elsewhere_report.snipped_beyond_coarse_detail == 1u);
+
+  // A coarse end point 2.8 voxels from the y arm's tip and farther from the others keeps the
+  // y arm (its tip is paired with it, so it is only cut back towards it); the -x arm, which
+  // no coarse end point is paired with, goes.
+  const std::vector<std::array<double, 3>> beside_the_y_tip{tip_of_plus_x_arm, {2.5, 6.5, 0.5}};
+  const auto [matched, matched_report] = pruned_with(&beside_the_y_tip, 4.0);
   BOOST_TEST(matched.count(Voxel_key{0, 2, 0}) == 1u);
-  BOOST_TEST(matched_report.snipped_beyond_coarse_detail == 0u);
+  BOOST_TEST(matched.count(Voxel_key{-8, 0, 0}) == 0u);
+  BOOST_TEST(matched_report.snipped_beyond_coarse_detail == 1u);
   BOOST_TEST(matched_report.cut_back_branches >= 1u);
 
   // As many coarse end points as ends: nothing more is snipped, even where none matches.
@@ -497,6 +509,63 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(an_end_branch_that_a_coarser_skeleton_has_not_is_s
   BOOST_TEST(one.count(Voxel_key{8, 0, 0}) == 1u);
   BOOST_TEST(one_report.snipped_beyond_coarse_detail == 1u);
   BOOST_TEST(components_of(one) == 1u);
+}
+
+// A spine 21 voxels long along x and two parallel teeth, 8 voxels up y from x = -2 and from
+// x = 1: the comb that a fine grid leaves along a thin rim, where a coarser grid has one end.
+std::vector<Voxel_key> spine_with_two_teeth()
+{
+  std::vector<Voxel_key> v;
+  add_segment(v, Voxel_key{-10, 0, 0}, Voxel_key{1, 0, 0}, 21);
+  add_segment(v, Voxel_key{-2, 1, 0}, Voxel_key{0, 1, 0}, 8);
+  add_segment(v, Voxel_key{1, 1, 0}, Voxel_key{0, 1, 0}, 8);
+  return v;
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(of_two_teeth_that_end_near_one_coarse_end_point_the_farther_is_snipped, VoxelSet,
+                              Voxel_set_models)
+{
+  // Radius 3: each tooth (8 voxels, 3 from the other) is no spur on its own, but is one
+  // with the thresholds 3 times larger.
+  const auto radius = CGAL::Constant_property_map<Voxel_key, double>(3.0);
+  auto pruned_with = [&](const std::vector<std::array<double, 3>>* coarse) {
+    VoxelSet skeleton = voxel_set<VoxelSet>(spine_with_two_teeth());
+    const gs::Pruning_report report = gs::prune_skeleton(
+        skeleton, gs::parameters::combine(gs::parameters::mat_radius_map(radius),
+                                          gs::parameters::coarse_end_points(coarse),
+                                          gs::parameters::coarse_end_point_tolerance(4.0)));
+    return std::make_pair(contents(skeleton), report);
+  };
+  const Voxel_key tip_of_first_tooth{-2, 8, 0}, tip_of_second_tooth{1, 8, 0};
+  const std::array<double, 3> first_end_of_spine{-9.5, 0.5, 0.5}, last_end_of_spine{10.5, 0.5, 0.5};
+
+  const auto [alone, alone_report] = pruned_with(nullptr);
+  BOOST_TEST(alone.count(tip_of_first_tooth) == 1u);
+  BOOST_TEST(alone.count(tip_of_second_tooth) == 1u);
+
+  // The coarser skeleton has one end between the two tips, 1 voxel from the first and 2
+  // from the second (both within the tolerance of 4): it is paired with the first, and the
+  // second tooth goes. With the end nearer the second tip, the first tooth goes.
+  const std::vector<std::array<double, 3>> nearer_the_first{first_end_of_spine, last_end_of_spine, {-0.5, 8.5, 0.5}};
+  const auto [first_kept, first_kept_report] = pruned_with(&nearer_the_first);
+  BOOST_TEST(first_kept.count(tip_of_first_tooth) == 1u);
+  BOOST_TEST(first_kept.count(Voxel_key{1, 2, 0}) == 0u);
+  BOOST_TEST(first_kept_report.snipped_beyond_coarse_detail == 1u);
+  BOOST_TEST(components_of(first_kept) == 1u);
+
+  const std::vector<std::array<double, 3>> nearer_the_second{first_end_of_spine, last_end_of_spine, {0.5, 8.5, 0.5}};
+  const auto [second_kept, second_kept_report] = pruned_with(&nearer_the_second);
+  BOOST_TEST(second_kept.count(tip_of_second_tooth) == 1u);
+  BOOST_TEST(second_kept.count(Voxel_key{-2, 2, 0}) == 0u);
+  BOOST_TEST(second_kept_report.snipped_beyond_coarse_detail == 1u);
+  BOOST_TEST(components_of(second_kept) == 1u);
+
+  // A coarse end point near each tip: both teeth stay.
+  const std::vector<std::array<double, 3>> one_per_tooth{first_end_of_spine, last_end_of_spine, {-1.5, 8.5, 0.5},
+                                                         {1.5, 8.5, 0.5}};
+  const auto [both, both_report] = pruned_with(&one_per_tooth);
+  BOOST_TEST((both == alone));
+  BOOST_TEST(both_report.snipped_beyond_coarse_detail == 0u);
 }
 
 BOOST_AUTO_TEST_CASE_TEMPLATE(an_end_branch_is_cut_back_to_where_the_coarser_skeleton_ends, VoxelSet,

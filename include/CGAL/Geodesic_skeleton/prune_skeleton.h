@@ -71,11 +71,14 @@ struct Pruning_report
 ///
 /// Given `coarse_end_points`, the end points of the skeleton of the same shape on a coarser
 /// grid, pruning then goes on while the skeleton's graph has more end points than those:
-/// an end branch whose tip is farther than `coarse_end_point_tolerance` from every coarse
-/// end point, detail that the finer grid resolves and the coarser one does not (the
-/// corners of a block, which a coarser grid merges into fewer branches), is judged with
+/// an end branch whose tip no coarse end point is paired with, detail that the finer grid
+/// resolves and the coarser one does not (the corners of a block, which a coarser grid
+/// merges into fewer branches; the teeth of a comb along a thin rim, which all end near the
+/// coarser skeleton's one end there), is judged with
 /// both thresholds 3 times larger (`unmatched_threshold_factor`), and each one snipped so
-/// counts against the surplus of end points. Then, while the skeleton has an end point that
+/// counts against the surplus of end points; in each round the tips and the coarse end
+/// points within `coarse_end_point_tolerance` of each other are paired one to one, nearest
+/// pairs first. Then, while the skeleton has an end point that
 /// no coarse end point is near and the coarser skeleton one that no end point is near, a
 /// branch snipped earlier whose tip is near the latter is swapped back in for an end branch
 /// at the same junction whose tip no coarse end point is near (as many end points are not
@@ -153,7 +156,8 @@ struct Pruning_report
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{coarse_end_point_tolerance}
 ///     \cgalParamDescription{how near the tip of an end branch, in voxels of `skeleton`, a
-///                           coarse end point must be for the coarser grid to have the branch,
+///                           coarse end point must be for the coarser grid to have the branch
+///                           (the nearest such tip that no other coarse end point is paired with),
 ///                           and how near a voxel of the branch for the branch to be cut back
 ///                           to it, in [0, 1e6] (package parameter)}
 ///     \cgalParamType{`double`}
@@ -171,8 +175,9 @@ struct Pruning_report
 /// each compares M balls, those whose centre is within the largest MAT radius of it along
 /// the third axis (O(N) at worst; a small part of the skeleton in practice); a few rounds
 /// in practice; O(N) extra memory. With `coarse_end_points` (C of them), the rounds run once
-/// more and the tip of each end branch is compared with each coarse end point: O(E C) more
-/// per round for E end branches; cutting back traces the graph again after each of the K
+/// more and the tip of each end branch is compared with each coarse end point, the pairs
+/// within the tolerance sorted and taken one to one: O(E C log(E C)) more per round
+/// for E end branches; cutting back traces the graph again after each of the K
 /// branches it cuts (K <= C) and compares the voxels of the end branches with the coarse end
 /// points: O(K N (log N + C)) more; the swaps trace the graph again for each of the S branches
 /// snipped that they try: O(S N log N) more, and O(N) memory for the branches snipped.

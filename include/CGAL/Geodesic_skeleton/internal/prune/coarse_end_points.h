@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <tuple>
 #include <vector>
 
 namespace CGAL {
@@ -64,8 +65,8 @@ constexpr double unmatched_threshold_factor = 3.;
 
 // What the snipping reads of a coarser skeleton: its end points, in the grid coordinates
 // of the skeleton being pruned, and how near one must be to a branch's tip for the coarse
-// grid to have the branch too. An end branch whose tip has none that near is judged with
-// thresholds `unmatched_factor` times larger, as long as the pruned skeleton has more end
+// grid to have the branch too. An end branch whose tip is not paired with one (match_tips(),
+// run on the tips of each round) is judged with thresholds `unmatched_factor` times larger, as long as the pruned skeleton has more end
 // points than the coarse one (`budget`, spent by each branch snipped that only the larger
 // thresholds call a spur).
 struct Coarse_end_point_guide
@@ -74,16 +75,46 @@ struct Coarse_end_point_guide
   double tolerance = 0;
   double unmatched_factor = 1;
   std::size_t budget = 0;
+  // The tips that match_tips() paired with a coarse end point, sorted.
+  std::vector<Voxel_key> matched_tips;
 
-  bool has_match_near(const Voxel_key& tip) const
+  // Pairs the end branches' `tips` with the coarse end points one to one, nearest pairs
+  // first (within the tolerance; ties by coarse point, then by tip): a coarse end point
+  // vouches for one end branch only, so that of two teeth of a comb that end near the
+  // coarse skeleton's one end, the farther is judged as detail the coarser grid does not
+  // have.
+  void match_tips(const std::vector<Voxel_key>& tips)
   {
-    return is_near_any(points, tip, tolerance * tolerance);
+    const double squared_tolerance = tolerance * tolerance;
+    std::vector<std::tuple<double, std::size_t, Voxel_key, std::size_t>> pairs; // distance, coarse, tip, tip index
+    for(std::size_t c = 0; c < points.size(); ++c)
+      for(std::size_t t = 0; t < tips.size(); ++t)
+      {
+        const double d = squared_distance3(points[c], centre_in_grid(tips[t]));
+        if(d <= squared_tolerance)
+          pairs.emplace_back(d, c, tips[t], t);
+      }
+    std::sort(pairs.begin(), pairs.end());
+    std::vector<bool> coarse_taken(points.size(), false), tip_taken(tips.size(), false);
+    matched_tips.clear();
+    for(const auto& [d, c, tip, t] : pairs)
+      if(!coarse_taken[c] && !tip_taken[t])
+      {
+        coarse_taken[c] = tip_taken[t] = true;
+        matched_tips.push_back(tip);
+      }
+    std::sort(matched_tips.begin(), matched_tips.end());
+  }
+
+  bool has_match(const Voxel_key& tip) const
+  {
+    return std::binary_search(matched_tips.begin(), matched_tips.end(), tip);
   }
 
   // The factor of the snipping's thresholds for the end branch whose tip is `tip`.
   double threshold_factor(const Voxel_key& tip) const
   {
-    return budget > 0 && !has_match_near(tip) ? unmatched_factor : 1.;
+    return budget > 0 && !has_match(tip) ? unmatched_factor : 1.;
   }
 
   // Records the snipping of an end branch that only the larger thresholds call a spur.

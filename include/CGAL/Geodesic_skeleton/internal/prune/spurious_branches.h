@@ -300,12 +300,20 @@ struct Snipping
 };
 
 // The branches among `branches` that `thresholds` calls spurs, with their spuriousness,
-// the most spurious first (ties by end voxel).
+// the most spurious first (ties by end voxel). The coarse guide, if any, first pairs the
+// coarse end points with the tips of `branches`.
 template <typename VoxelSet, typename Radii>
 std::vector<End_branch> spurs_among(std::vector<End_branch> branches, const Radii& radii,
                                     const Spur_thresholds& thresholds, const VoxelSet& skeleton,
                                     const Covering_balls& balls)
 {
+  if(thresholds.coarse)
+  {
+    std::vector<Voxel_key> tips;
+    for(const End_branch& branch : branches)
+      tips.push_back(branch.voxels.front());
+    thresholds.coarse->match_tips(tips);
+  }
   std::vector<End_branch> spurs;
   for(End_branch& branch : branches)
   {
