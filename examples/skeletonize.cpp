@@ -118,7 +118,7 @@ const Numeric_option numeric_options[] = {
     {"--smoothing-window", "W", ranges::smoothing_window, "points averaged along branches",
      "5 at resolution 64, scaled with it: 9 at 128"},
     {"--bend-threshold", "T", ranges::bend_threshold, "chord-to-point accumulation that makes a joint"},
-    {"--straightness", "S", ranges::straightness_tolerance, "allowed bone deviation in MAT radii"},
+    {"--straightness", "S", ranges::straightness_tolerance, "allowed bone deviation in MAT radii (at least a quarter of the thickest part's)"},
     {"--min-bone-length", "F", ranges::minimum_bone_length_factor, "every bone is longer than F MAT radii"},
     {"--max-bone-length", "F", ranges::maximum_bone_length_factor,
      "longest straight bone in MAT radii, cut at its narrowings (0: no limit)"},

@@ -578,6 +578,37 @@ BOOST_AUTO_TEST_CASE(no_bone_is_shorter_than_the_level_of_detail_of_its_piece)
   BOOST_TEST(num_edges(bones_of(s, gs::parameters::maximum_bone_length_factor(0.0))) == num_edges(floored));
 }
 
+// A limb of radius 1, 2 long, turns at a right angle into a thin part of radius 0.05, 2 long,
+// that bows out by 0.06 (a leg, or a wall, as a fine grid resolves it): more than half its
+// own radius, less than half the radius of the rig's level of detail (a quarter of 1).
+// Measured in its own radius it is cut where it strays most; at the level of detail it is
+// one bone.
+BOOST_AUTO_TEST_CASE(a_thin_part_strays_from_its_chord_in_radii_of_the_level_of_detail)
+{
+  std::vector<Point> limb = polyline({Point(0, 0, 0), Point(2, 0, 0)}, 0.05);
+  limb.pop_back();
+  const std::size_t thick = limb.size();
+  for(int i = 0; i <= 40; ++i)
+    limb.emplace_back(2 + 0.06 * std::sin(pi * i / 40.), 0.05 * i, 0);
+  Skeleton s = chain_skeleton(limb, 1.0);
+  for(std::size_t v = thick; v < num_vertices(s); ++v)
+    s[v].radius = 0.05;
+  auto bends_in_thin_part = [](const Control& c) {
+    std::size_t bends = 0;
+    for(std::size_t j = 0; j < num_vertices(c); ++j)
+      if(c[j].kind == gs::Joint_kind::bend && c[j].point.y() > 0.1)
+        ++bends;
+    return bends;
+  };
+  const Control at_level_of_detail = bones_of(s);
+  const Control in_own_radius = bones_of(s, gs::parameters::minimum_bone_length_of_piece_factor(0.0));
+  check_tree(at_level_of_detail);
+  BOOST_TEST(bends_in_thin_part(at_level_of_detail) == 0u);
+  BOOST_TEST(bends_in_thin_part(in_own_radius) >= 1u);
+  // A tolerance of 0.2 radii (0.05 at the level of detail) cuts it again.
+  BOOST_TEST(bends_in_thin_part(bones_of(s, gs::parameters::straightness_tolerance(0.2))) >= 1u);
+}
+
 // The same wavy chain as a wing's chain: its MAT radius is the wing's half thickness, 0.1,
 // and its sheet half width is 1. Measured in the width, its waves are under the
 // straightness tolerance; the joints keep their MAT radius; a width under the radius

@@ -215,7 +215,8 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 /// The end points and junctions of the curve skeleton are the initial joints; each branch
 /// between them is split recursively where the chord-to-point distance accumulation
 /// (`chord_to_point_distance_accumulation()`) peaks at `bend_threshold` or more, or where
-/// it strays from its chord by more than `straightness_tolerance` MAT radii, leaving only
+/// it strays from its chord by more than `straightness_tolerance` MAT radii (each radius
+/// taken as at least the radius of the rig's level of detail below), leaving only
 /// bones longer than `minimum_bone_length_factor` MAT radii (each radius taken as at least
 /// `smallest_radius`, and as at least the sheet's half width where a `sheet_half_width_map`
 /// gives one) and longer than `minimum_bone_length_of_piece_factor` times the largest MAT
@@ -278,7 +279,11 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{straightness_tolerance}
 ///     \cgalParamDescription{how far a bone may stray from its chord, in MAT radii, in
-///                           [0, 100] (package parameter)}
+///                           [0, 100]; the radius is taken as at least
+///                           `minimum_bone_length_of_piece_factor` / `minimum_bone_length_factor`
+///                           times the largest MAT radius of the bone's connected component
+///                           (the radius whose shortest bone is the rig's level of detail; a
+///                           quarter of it by default) (package parameter)}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{0.5}
 ///   \cgalParamNEnd

@@ -34,7 +34,7 @@ constexpr std::size_t most_bones_per_straight_part = 4;
 struct Bone_splitting_settings
 {
   double bend_threshold;           // CPDA value (in chord lengths) that makes a bend a joint
-  double straightness_tolerance;   // allowed deviation from the chord, in MAT radii
+  double straightness_tolerance;   // allowed deviation from the chord, in MAT radii (at least the level of detail's)
   double minimum_bone_length_factor; // shortest bone, in MAT radii
   double maximum_bone_length_factor; // longest straight bone, in largest MAT radii of the piece (0: no limit)
   std::vector<double> chord_length_factors; // CPDA chord lengths, in MAT radii
@@ -94,6 +94,20 @@ private:
     return (std::max)(m_settings.minimum_bone_length_factor * radius, m_shortest_of_piece);
   }
 
+  // How far a part of mean radius `radius` may stray from its chord and stay one bone:
+  // `straightness_tolerance` radii, the radius taken as at least that of the piece's level
+  // of detail (the radius whose shortest bone is the piece's, a quarter of its largest MAT
+  // radius by default). Like the shortest bone: in its own small radius, a thin part (a
+  // leg, a wall, a lens) strays by more than the tolerance wherever a finer grid resolves
+  // a wave that a coarser one smooths away.
+  double straightness_tolerance(double radius) const
+  {
+    const double level_of_detail_radius = m_settings.minimum_bone_length_factor > 0
+                                              ? m_shortest_of_piece / m_settings.minimum_bone_length_factor
+                                              : 0.0;
+    return m_settings.straightness_tolerance * (std::max)(radius, level_of_detail_radius);
+  }
+
   // Whether a bone `length` long is longer than the shortest bone: clearly, so that a part
   // exactly twice the shortest bone long, which a shape aligned with the grid gives (an
   // arm of a cross 26 voxels long with a radius of 6.5), stays whole whatever the rounding,
@@ -148,7 +162,7 @@ private:
           best = k;
         }
       }
-      if(deviation <= m_settings.straightness_tolerance * radius)
+      if(deviation <= straightness_tolerance(radius))
       {
         subdivide(i, j, shortest, cuts);
         return;
