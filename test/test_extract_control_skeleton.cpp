@@ -217,11 +217,15 @@ BOOST_AUTO_TEST_CASE(demo_animals_give_one_tree_of_a_rig_s_size_inside_the_mesh)
 // bones long, and the split took the tie as room for a cut. The three peaks (an open
 // surface, a thin lens once its fans close it) went from 32 to 50: at 128 a comb of teeth
 // runs to the lens's rim, several near each end that 64 has there, and any coarse end point
-// within the tolerance vouched for every tooth near it.
+// within the tolerance vouched for every tooth near it. The open surface mesh_with_border
+// (25 joints at 64) had 32 at 128 and ALSTOM_TEST4 (7) had 9: their thin chains, measured
+// in their own radii, strayed from their chords by more than the tolerance wherever the
+// finer grid resolves a wave, before the stray was measured at the rig's level of detail.
 BOOST_AUTO_TEST_CASE(a_rig_keeps_its_size_when_the_resolution_doubles)
 {
   for(const char* name : {"cow.off", "dino.off", "armadillo.off", "man.off", "bear.off", "homer.off", "hand.off",
-                          "bull.off", "elephant.off", "elk.off", "cross.off", "three_peaks.off"})
+                          "bull.off", "elephant.off", "elk.off", "cross.off", "three_peaks.off",
+                          "mesh_with_border.off", "ALSTOM_TEST4.off"})
   {
     BOOST_TEST_CONTEXT(name)
     {
