@@ -283,7 +283,8 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 ///                           `minimum_bone_length_of_piece_factor` / `minimum_bone_length_factor`
 ///                           times the largest MAT radius of the bone's connected component
 ///                           (the radius whose shortest bone is the rig's level of detail; a
-///                           quarter of it by default) (package parameter)}
+///                           quarter of it by default; no floor when
+///                           `minimum_bone_length_factor` is 0) (package parameter)}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{0.5}
 ///   \cgalParamNEnd

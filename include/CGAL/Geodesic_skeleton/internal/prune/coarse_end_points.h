@@ -65,10 +65,11 @@ constexpr double unmatched_threshold_factor = 3.;
 
 // What the snipping reads of a coarser skeleton: its end points, in the grid coordinates
 // of the skeleton being pruned, and how near one must be to a branch's tip for the coarse
-// grid to have the branch too. An end branch whose tip is not paired with one (match_tips(),
-// run on the tips of each round) is judged with thresholds `unmatched_factor` times larger, as long as the pruned skeleton has more end
-// points than the coarse one (`budget`, spent by each branch snipped that only the larger
-// thresholds call a spur).
+// grid to have the branch too. An end branch whose tip is not paired with one
+// (match_tips(), run on the tips of each round) is judged with thresholds
+// `unmatched_factor` times larger, as long as the pruned skeleton has more end points than
+// the coarse one (`budget`, spent by each branch snipped that only the larger thresholds
+// call a spur).
 struct Coarse_end_point_guide
 {
   std::vector<std::array<double, 3>> points;
