@@ -419,6 +419,31 @@ BOOST_AUTO_TEST_CASE(a_long_straight_limb_is_cut_at_its_narrowings)
   BOOST_TEST(limb_bones == 3u);
 }
 
+// A strip alone (radius 0.1, 12 long: the longest bone is 0.3) steps aside by 0.2 at 10.5,
+// 1.5 from its tip, as the skeleton of a thin blade steps by a voxel: each corner of the
+// step is a joint. Both straight parts are far longer than the longest bone; they share
+// the branch's 4 bones in proportion to their lengths (4 and 1), not 4 each.
+BOOST_AUTO_TEST_CASE(the_straight_parts_of_a_branch_share_its_bones)
+{
+  std::vector<Point> strip = polyline({Point(0, 0, 0), Point(10.5, 0, 0)}, 0.05);
+  for(const Point& p : polyline({Point(10.5, 0.2, 0), Point(12, 0.2, 0)}, 0.05))
+    strip.push_back(p);
+  const Control c = bones_of(chain_skeleton(strip, 0.1));
+  check_tree(c);
+  std::size_t bones_before_the_step = 0, bones_past_the_step = 0;
+  for(const auto bone : boost::make_iterator_range(edges(c)))
+  {
+    const double x0 = c[source(bone, c)].point.x(), x1 = c[target(bone, c)].point.x();
+    bones_before_the_step += x0 < 10.51 && x1 < 10.51;
+    bones_past_the_step += x0 > 10.52 && x1 > 10.52;
+  }
+  BOOST_TEST(bones_before_the_step == 4u);
+  BOOST_TEST(bones_past_the_step == 1u);
+  BOOST_TEST(num_edges(c) == 6u); // and the short bone of the step, between its corners
+  // Without the step, the strip is one straight part: 4 bones.
+  BOOST_TEST(num_edges(bones_of(chain_skeleton(polyline({Point(0, 0, 0), Point(12, 0, 0)}, 0.05), 0.1))) == 4u);
+}
+
 // A straight part exactly twice the shortest bone long stays one bone, wherever it lies: an
 // arm of the demo cross aligned with the grid is 26 voxels long with a radius of 6.5, and it
 // used to be cut in two there by an exact tie, and kept whole at any other placement or at a

@@ -298,7 +298,8 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 ///     \cgalParamDescription{the longest straight bone, in units of the largest MAT radius
 ///                           of its connected component of the skeleton (R), in [0, 1000]: a
 ///                           longer one is cut into ceil(length / (factor * R)) bones of
-///                           about equal length,
+///                           about equal length (at most 4 per branch, each straight part
+///                           its share in proportion to its length, rounded up),
 ///                           each cut at the smallest MAT radius within a quarter of a bone's
 ///                           length of its equal-length position; 0 turns this off (package
 ///                           parameter)}

@@ -26,10 +26,12 @@ namespace internal {
 // than the part fits nowhere in it and gives none).
 constexpr double longest_chord_in_part_lengths = 0.5;
 
-// The most bones a straight part is cut into by its length: a limb has three or four, and a
-// shape whose thickest part is thin (a plate, a cape alone) would otherwise get a bone
-// every few thicknesses.
-constexpr std::size_t most_bones_per_straight_part = 4;
+// The most bones the cut of its long straight parts gives a branch: a limb has three or
+// four, and a shape whose thickest part is thin (a plate, a strip, a cape alone) would
+// otherwise get a bone every few thicknesses. A straight part gets its share, in
+// proportion to its length: a cut at a bend or a stray near the tip of a strip would
+// otherwise give the short part as many bones again.
+constexpr std::size_t most_bones_per_branch = 4;
 
 struct Bone_splitting_settings
 {
@@ -173,11 +175,21 @@ private:
     split(best, j, cuts);
   }
 
+  // The bones that a straight part `length` long may be cut into: its share of
+  // `most_bones_per_branch`, in proportion to its length, rounded up (a share that is a
+  // whole number to rounding stays that number).
+  double share_of_most_bones(double length) const
+  {
+    const double share = double(most_bones_per_branch) * length / m_s.back();
+    return std::ceil(share - 1e-9 * share);
+  }
+
   // A straight part longer than the longest bone (`maximum_bone_length_factor` times the
   // largest MAT radius of the piece: the body's thickness, so that a thin limb gets as
   // many bones as a thick one of the same length): cut it into n bones of about equal
-  // length, n the fewest that are short enough (at most `most_bones_per_straight_part`, and
-  // few enough that each is longer than `shortest`, the part's shortest_bone()), each cut at
+  // length, n the fewest that are short enough (at most the part's share of
+  // `most_bones_per_branch`, rounded up, and few enough that each is longer than
+  // `shortest`, the part's shortest_bone()), each cut at
   // the narrowest point (the smallest MAT radius, where an elbow, a knee or a wrist is)
   // within a quarter of a bone's length of its equal-length position, ties to the nearest
   // that position.
@@ -187,7 +199,7 @@ private:
     const double length = m_s[j] - m_s[i];
     if(!(longest > 0) || length <= longest)
       return;
-    double bones = std::min(std::ceil(length / longest), double(most_bones_per_straight_part));
+    double bones = std::min(std::ceil(length / longest), share_of_most_bones(length));
     while(bones > 1 && !longer_than_shortest(length / bones, shortest))
       --bones;
     const std::size_t n = bones >= 2 ? std::size_t(bones) : 1;
