@@ -449,18 +449,26 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(a_plain_path_is_never_snipped, VoxelSet, Voxel_set
 const std::array<double, 3> tip_of_plus_x_arm{8.5, 0.5, 0.5}, tip_of_minus_x_arm{-7.5, 0.5, 0.5},
     tip_of_plus_y_arm{0.5, 8.5, 0.5};
 
+// What prune_skeleton() leaves of `voxels`, all of MAT radius 3, given the coarse end
+// points `coarse` (none when null) and their tolerance, and its report.
+template <typename VoxelSet>
+std::pair<std::set<Voxel_key>, gs::Pruning_report> pruned_with_coarse_end_points(
+    const std::vector<Voxel_key>& voxels, const std::vector<std::array<double, 3>>* coarse, double tolerance)
+{
+  VoxelSet skeleton = voxel_set<VoxelSet>(voxels);
+  const gs::Pruning_report report = gs::prune_skeleton(
+      skeleton, gs::parameters::combine(
+                    gs::parameters::mat_radius_map(CGAL::Constant_property_map<Voxel_key, double>(3.0)),
+                    gs::parameters::coarse_end_points(coarse), gs::parameters::coarse_end_point_tolerance(tolerance)));
+  return std::make_pair(contents(skeleton), report);
+}
+
 BOOST_AUTO_TEST_CASE_TEMPLATE(an_end_branch_that_a_coarser_skeleton_has_not_is_snipped, VoxelSet, Voxel_set_models)
 {
   // Radius 3: each arm (8 voxels out of the cluster) reaches out more than the level of
   // detail and is longer than the spur length, so it stays on its own, but not 3 times so.
-  const auto radius = CGAL::Constant_property_map<Voxel_key, double>(3.0);
-  auto pruned_with = [&](const std::vector<std::array<double, 3>>* coarse, double tolerance) {
-    VoxelSet skeleton = voxel_set<VoxelSet>(thick_junction_with_three_arms());
-    const gs::Pruning_report report = gs::prune_skeleton(
-        skeleton, gs::parameters::combine(gs::parameters::mat_radius_map(radius),
-                                          gs::parameters::coarse_end_points(coarse),
-                                          gs::parameters::coarse_end_point_tolerance(tolerance)));
-    return std::make_pair(contents(skeleton), report);
+  auto pruned_with = [](const std::vector<std::array<double, 3>>* coarse, double tolerance) {
+    return pruned_with_coarse_end_points<VoxelSet>(thick_junction_with_three_arms(), coarse, tolerance);
   };
   const Voxel_key end_of_plus_y_arm{0, 8, 0};
 
@@ -527,14 +535,8 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(of_two_teeth_that_end_near_one_coarse_end_point_th
 {
   // Radius 3: each tooth (8 voxels, 3 from the other) is no spur on its own, but is one
   // with the thresholds 3 times larger.
-  const auto radius = CGAL::Constant_property_map<Voxel_key, double>(3.0);
-  auto pruned_with = [&](const std::vector<std::array<double, 3>>* coarse) {
-    VoxelSet skeleton = voxel_set<VoxelSet>(spine_with_two_teeth());
-    const gs::Pruning_report report = gs::prune_skeleton(
-        skeleton, gs::parameters::combine(gs::parameters::mat_radius_map(radius),
-                                          gs::parameters::coarse_end_points(coarse),
-                                          gs::parameters::coarse_end_point_tolerance(4.0)));
-    return std::make_pair(contents(skeleton), report);
+  auto pruned_with = [](const std::vector<std::array<double, 3>>* coarse) {
+    return pruned_with_coarse_end_points<VoxelSet>(spine_with_two_teeth(), coarse, 4.0);
   };
   const Voxel_key tip_of_first_tooth{-2, 8, 0}, tip_of_second_tooth{1, 8, 0};
   const std::array<double, 3> first_end_of_spine{-9.5, 0.5, 0.5}, last_end_of_spine{10.5, 0.5, 0.5};
@@ -571,16 +573,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(of_two_teeth_that_end_near_one_coarse_end_point_th
 BOOST_AUTO_TEST_CASE_TEMPLATE(an_end_branch_is_cut_back_to_where_the_coarser_skeleton_ends, VoxelSet,
                               Voxel_set_models)
 {
-  const auto radius = CGAL::Constant_property_map<Voxel_key, double>(3.0);
-  auto pruned_with = [&](const std::vector<Voxel_key>& voxels, const std::vector<std::array<double, 3>>* coarse,
-                         double tolerance) {
-    VoxelSet skeleton = voxel_set<VoxelSet>(voxels);
-    const gs::Pruning_report report = gs::prune_skeleton(
-        skeleton, gs::parameters::combine(gs::parameters::mat_radius_map(radius),
-                                          gs::parameters::coarse_end_points(coarse),
-                                          gs::parameters::coarse_end_point_tolerance(tolerance)));
-    return std::make_pair(contents(skeleton), report);
-  };
+  const auto pruned_with = pruned_with_coarse_end_points<VoxelSet>;
   const std::vector<Voxel_key> three_arms = thick_junction_with_three_arms();
   const std::set<Voxel_key> uncut = pruned_with(three_arms, nullptr, 2.0).first;
   // `uncut` without the voxels (0, y, 0) of the y arm (from (0, 2, 0) to (0, 8, 0)) past `y`.
@@ -661,14 +654,8 @@ std::vector<Voxel_key> plus_with_a_stub()
 BOOST_AUTO_TEST_CASE_TEMPLATE(a_snipped_branch_that_the_coarser_skeleton_ends_in_is_swapped_back_in, VoxelSet,
                               Voxel_set_models)
 {
-  const auto radius = CGAL::Constant_property_map<Voxel_key, double>(3.0);
-  auto pruned_with = [&](const std::vector<std::array<double, 3>>* coarse) {
-    VoxelSet skeleton = voxel_set<VoxelSet>(plus_with_a_stub());
-    const gs::Pruning_report report = gs::prune_skeleton(
-        skeleton, gs::parameters::combine(gs::parameters::mat_radius_map(radius),
-                                          gs::parameters::coarse_end_points(coarse),
-                                          gs::parameters::coarse_end_point_tolerance(2.0)));
-    return std::make_pair(contents(skeleton), report);
+  auto pruned_with = [](const std::vector<std::array<double, 3>>* coarse) {
+    return pruned_with_coarse_end_points<VoxelSet>(plus_with_a_stub(), coarse, 2.0);
   };
   const Voxel_key tip_of_stub{0, 2, 0}, tip_of_minus_y_arm{0, -8, 0};
 
