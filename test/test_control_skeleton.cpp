@@ -4,6 +4,7 @@
 // curve skeleton of a demo mesh.
 #include <CGAL/Geodesic_skeleton/Control_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
+#include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
 #include <CGAL/Geodesic_skeleton/chord_to_point_distance_accumulation.h>
 #include <CGAL/Geodesic_skeleton/extract_control_skeleton.h>
 #include <CGAL/Geodesic_skeleton/sheet_half_widths.h>
@@ -672,6 +673,62 @@ BOOST_AUTO_TEST_CASE(sheet_half_widths_discount_the_rounds_of_any_level)
     BOOST_CHECK_THROW(gs::sheet_half_widths(s, radii, bad), std::invalid_argument);
 }
 
+// A wavy chain of radius 0.1, as a bar that pruning kept beside a plate of half width 1:
+// with the piece's radius from the plate (the piece_radius_map, given at one vertex or at
+// all), its bones are as long as the plate's level of detail (half of 1) asks; the joints
+// keep their MAT radius; a piece radius under the radii changes nothing.
+BOOST_AUTO_TEST_CASE(a_piece_radius_sets_the_level_of_detail_of_its_piece)
+{
+  std::vector<Point> wave;
+  for(int i = 0; i <= 200; ++i)
+    wave.emplace_back(0.1 * i, 0.3 * std::sin(0.1 * i * pi / 2.), 0);
+  const Skeleton s = chain_skeleton(wave, 0.1);
+  auto shortest_bone = [](const Control& c) {
+    double shortest = HUGE_VAL;
+    for(const auto e : CGAL::make_range(edges(c)))
+      shortest = (std::min)(shortest, c[e].length);
+    return shortest;
+  };
+  std::vector<double> at_one_vertex(num_vertices(s), 0.0), everywhere(num_vertices(s), 1.0),
+      narrow(num_vertices(s), 0.05);
+  at_one_vertex[7] = 1.0;
+  const Control own = bones_of(s);
+  const Control in_piece = bones_of(s, gs::parameters::piece_radius_map(CGAL::make_property_map(at_one_vertex)));
+  check_tree(in_piece);
+  BOOST_TEST(num_edges(own) >= 8u);
+  BOOST_TEST(num_edges(in_piece) < num_edges(own));
+  BOOST_TEST(shortest_bone(own) < 0.5);
+  BOOST_TEST(shortest_bone(in_piece) > 0.5);
+  for(std::size_t j = 0; j < num_vertices(in_piece); ++j)
+    BOOST_TEST(in_piece[j].radius == 0.1);
+  const Control given_everywhere = bones_of(s, gs::parameters::piece_radius_map(CGAL::make_property_map(everywhere)));
+  BOOST_TEST(num_edges(given_everywhere) == num_edges(in_piece));
+  BOOST_TEST(num_edges(bones_of(s, gs::parameters::piece_radius_map(CGAL::make_property_map(narrow)))) ==
+             num_edges(own));
+}
+
+// widest_sheet_radius_of_pieces(): every voxel of a 26-connected piece gets the largest
+// sheet radius of the piece, a piece without one 0; radii of voxels outside the set count
+// for nothing.
+BOOST_AUTO_TEST_CASE(every_voxel_of_a_piece_gets_its_widest_sheet)
+{
+  using gs::Voxel_key;
+  gs::Sparse_voxel_set skeleton;
+  skeleton.reset(gs::Voxel_frame(), gs::Voxel_box{Voxel_key{-20, -20, -20}, Voxel_key{20, 20, 20}});
+  const std::vector<Voxel_key> plate{{0, 0, 0}, {1, 0, 0}, {2, 1, 1}, {3, 2, 1}}, bar{{10, 0, 0}, {11, 0, 0}};
+  for(const Voxel_key& k : plate)
+    skeleton.insert(k);
+  for(const Voxel_key& k : bar)
+    skeleton.insert(k);
+  const gs::Sheet_radii radii{{Voxel_key{1, 0, 0}, 9.0}, {Voxel_key{3, 2, 1}, 4.0}, {Voxel_key{12, 0, 0}, 30.0}};
+  const gs::Sheet_radii widest = gs::widest_sheet_radius_of_pieces(skeleton, radii);
+  BOOST_TEST(widest.size() == plate.size() + bar.size());
+  for(const Voxel_key& k : plate)
+    BOOST_TEST(widest.at(k) == 9.0);
+  for(const Voxel_key& k : bar)
+    BOOST_TEST(widest.at(k) == 0.0);
+}
+
 BOOST_AUTO_TEST_CASE(bad_parameters_throw)
 {
   const Skeleton s = chain_skeleton(polyline({Point(0, 0, 0), Point(0, 0, 30)}, 0.5), 2.0);
@@ -697,6 +754,8 @@ BOOST_AUTO_TEST_CASE(bad_parameters_throw)
     std::vector<double> widths(num_vertices(s), 0.0);
     widths[3] = bad;
     BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::sheet_half_width_map(CGAL::make_property_map(widths))),
+                      std::invalid_argument);
+    BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::piece_radius_map(CGAL::make_property_map(widths))),
                       std::invalid_argument);
   }
   Skeleton empty;

@@ -694,6 +694,25 @@ BOOST_AUTO_TEST_CASE(a_null_output_pointer_asks_for_nothing)
     BOOST_TEST(without_outputs[j].point == with_outputs[j].point);
 }
 
+// boeing.off is plates without thickness beside bars. At 128 the pruning keeps a chain
+// through a bar beside the plates, having judged the piece's twigs by the plates' width;
+// extract_control_skeleton() splits it at that level of detail, in fewer bones than its
+// own curve skeleton gets from a split that knows only the radii along the chain.
+BOOST_AUTO_TEST_CASE(a_chain_kept_beside_a_sheet_is_split_at_the_level_of_detail_of_the_sheet)
+{
+  using Skeleton = gs::Curve_skeleton<Point, boost::graph_traits<Mesh>::vertex_descriptor>;
+  const Mesh mesh = test::demo_mesh<Mesh>("boeing.off");
+  Control control;
+  Skeleton curve;
+  const gs::Control_skeleton_report r = gs::extract_control_skeleton(
+      mesh, control, gs::parameters::combine(gs::parameters::resolution(128), gs::parameters::curve_skeleton_output(&curve)));
+  Control along_the_chain;
+  gs::split_into_bones(curve, along_the_chain, gs::parameters::smallest_radius(r.smallest_radius));
+  BOOST_TEST(control[boost::graph_bundle].roots.size() == 1u);
+  BOOST_TEST(num_edges(control) > 0u);
+  BOOST_TEST(num_edges(control) < num_edges(along_the_chain));
+}
+
 BOOST_AUTO_TEST_CASE(the_public_stages_composed_by_hand_give_the_same_skeleton)
 {
   // extract_control_skeleton() is a composition of the public stages: the same calls
@@ -724,6 +743,8 @@ BOOST_AUTO_TEST_CASE(the_public_stages_composed_by_hand_give_the_same_skeleton)
       solid.for_each([&](const gs::Voxel_key& k) { skeleton.insert(k); });
       gs::remove_small_pieces(skeleton, distances);
       const std::size_t cut = gs::cut_spurious_cycles(skeleton, mesh, with_surface);
+      // The widest sheet of each piece, before pruning thins the sheets away.
+      const gs::Sheet_radii widest_sheet = gs::widest_sheet_radius_of_pieces(skeleton, sheet_radii);
       gs::prune_skeleton(skeleton,
                          gs::parameters::combine(gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(distances)),
                                                  gs::parameters::sheet_radius_map(gs::sheet_radius_in_voxels_map(sheet_radii))));
@@ -731,11 +752,15 @@ BOOST_AUTO_TEST_CASE(the_public_stages_composed_by_hand_give_the_same_skeleton)
       gs::to_graph(skeleton, distances, mesh, curve, with_surface);
       gs::smooth_skeleton(curve);
       const std::vector<std::size_t> moved = gs::move_skeleton_inside(mesh, curve, with_surface);
-      // A thin sheet's chain is split in lengths of its width (0 where there is no sheet).
-      const std::vector<double> sheet_widths = gs::sheet_half_widths(curve, sheet_radii, solid.frame().voxel_size());
+      // A thin sheet's chain is split in lengths of its width (0 where there is no sheet), and
+      // a piece at the level of detail of its widest sheet.
+      const double voxel_size = solid.frame().voxel_size();
+      const std::vector<double> sheet_widths = gs::sheet_half_widths(curve, sheet_radii, voxel_size);
+      const std::vector<double> piece_widths = gs::sheet_half_widths(curve, widest_sheet, voxel_size);
       Control composed;
       gs::split_into_bones(curve, composed,
-                           gs::parameters::sheet_half_width_map(CGAL::make_property_map(sheet_widths)));
+                           gs::parameters::combine(gs::parameters::sheet_half_width_map(CGAL::make_property_map(sheet_widths)),
+                                                   gs::parameters::piece_radius_map(CGAL::make_property_map(piece_widths))));
       //! [composed_chain]
 
       BOOST_TEST(cut == r.spurious_cycles_cut);

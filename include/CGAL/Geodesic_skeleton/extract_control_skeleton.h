@@ -186,7 +186,9 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 /// thickness, and snips the end branches that lie inside the MAT balls of the rest of the
 /// skeleton (the comb of parallel curves that thinning leaves in a thick sheet); `split_into_bones()`
 /// gets the same widths in world units (`sheet_half_widths()`, its `sheet_half_width_map`),
-/// so that a sheet's chain is split in lengths of its width.
+/// so that a sheet's chain is split in lengths of its width, and the widest sheet of each
+/// piece before pruning (`widest_sheet_radius_of_pieces()`, its `piece_radius_map`), so that
+/// a piece's level of detail is the one its pruning judged by, whichever chain the pruning kept.
 ///
 /// Between `thin()` and `prune_skeleton()`, `remove_small_pieces()` removes the skeletons
 /// of the detached pieces whose solid is smaller than `small_piece_fraction` of the largest
@@ -403,6 +405,8 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
 
   report.spurious_cycles_cut = cut_spurious_cycles(skeleton, mesh, with_surface);
   clock.finished("cut_spurious_cycles");
+  // Pruning judges a piece's twigs by its widest sheet, and may keep a chain beside it.
+  const Sheet_radii widest_sheet_of_piece = widest_sheet_radius_of_pieces(skeleton, sheet_radii);
 
   // The end branches that a finer grid resolves beyond the level of detail of the default
   // one are snipped as long as the skeleton has more end points than it has there.
@@ -451,11 +455,14 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   const double longest_extent = report.voxel_size * double(report.resolution);
   report.smallest_radius = choose_parameter(get_parameter(np, internal_np::smallest_radius_tag),
                                             longest_extent / (2. * default_voxel_resolution));
-  // A thin sheet's chain is split in lengths of the sheet's width, as pruning judged it.
+  // A thin sheet's chain is split in lengths of the sheet's width, and a piece at the level
+  // of detail of its widest sheet, as pruning judged them.
   const std::vector<double> sheet_widths = sheet_half_widths(curve, sheet_radii, report.voxel_size);
+  const std::vector<double> piece_widths = sheet_half_widths(curve, widest_sheet_of_piece, report.voxel_size);
   split_into_bones(curve, out,
                    parameters::combine(parameters::smallest_radius(report.smallest_radius),
-                                       parameters::sheet_half_width_map(CGAL::make_property_map(sheet_widths)), curve_np));
+                                       parameters::sheet_half_width_map(CGAL::make_property_map(sheet_widths)),
+                                       parameters::piece_radius_map(CGAL::make_property_map(piece_widths)), curve_np));
   report.joints_moved_inside = internal::joints_on_vertices(out, moved_inside);
   clock.finished("split_into_bones");
   if(Skeleton* curve_output = internal::output_pointer<Skeleton>(np, internal_np::curve_skeleton_output_tag))

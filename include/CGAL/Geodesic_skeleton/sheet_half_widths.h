@@ -6,9 +6,11 @@
 
 /// \file sheet_half_widths.h
 /// The half width of the thin sheet that each vertex of a curve skeleton runs through, in
-/// world units, from the sheet radii that `thin()` records.
+/// world units, from the sheet radii that `thin()` records, and the widest sheet of each
+/// piece of a skeleton.
 
 #include <CGAL/Geodesic_skeleton/Skeleton_radius_in_voxels_map.h>
+#include <CGAL/Geodesic_skeleton/internal/voxel_components.h>
 
 #include <boost/graph/graph_traits.hpp>
 
@@ -64,6 +66,49 @@ std::vector<double> sheet_half_widths(const CurveSkeleton& curve, const Sheet_ra
       widths[v] = (std::max)(0.0, sheet->second - internal::shell_rounds) * voxel_size;
   }
   return widths;
+}
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// The widest thin sheet of each piece of a skeleton: for each voxel of `skeleton`, the
+/// largest sheet radius over the 26-connected piece it is in (0 for a piece without any).
+///
+/// Taken before pruning, it keeps the width of the sheets that pruning then thins away: a
+/// chain that pruning keeps beside a sheet (a bar beside a plate, a bone beside a fin) still
+/// belongs to a piece that wide. `extract_control_skeleton()` reads it at the vertices of the
+/// pruned curve skeleton (`sheet_half_widths()`) and gives it `split_into_bones()` as its
+/// `piece_radius_map`, so that the rig's level of detail of a piece is the one that pruning
+/// judged its twigs by, whichever path through the sheet pruning kept.
+///
+/// \tparam VoxelSet a voxel set with `for_each(f)` (f called with each `Voxel_key`) and
+///         `contains(k)`, e.g. `Sparse_voxel_set`.
+/// \param skeleton the voxels that `thin()` kept, before `prune_skeleton()`.
+/// \param sheet_radii the sheet radii that `thin()` recorded through its `sheet_radius_map`
+///        (a voxel without one counts as 0).
+/// \returns a sheet radius (in voxels) for every voxel of `skeleton`, the same for all the
+///          voxels of a piece: for example `sheet_half_widths(curve, widest, voxel_size)` at
+///          the vertices of a curve skeleton made from some of these voxels.
+///
+/// \b Complexity: O(K log K) for K voxels (the pieces), plus O(K) expected hash lookups.
+template <typename VoxelSet>
+Sheet_radii widest_sheet_radius_of_pieces(const VoxelSet& skeleton, const Sheet_radii& sheet_radii)
+{
+  std::vector<Voxel_key> keys;
+  skeleton.for_each([&](const Voxel_key& k) { keys.push_back(k); });
+  std::vector<std::size_t> piece;
+  const std::size_t pieces =
+      internal::voxel_components(keys, [&](const Voxel_key& k) { return skeleton.contains(k); }, piece);
+  std::vector<double> widest(pieces, 0.0);
+  for(std::size_t i = 0; i < keys.size(); ++i)
+  {
+    const auto sheet = sheet_radii.find(keys[i]);
+    if(sheet != sheet_radii.end())
+      widest[piece[i]] = (std::max)(widest[piece[i]], sheet->second);
+  }
+  Sheet_radii of_voxel;
+  of_voxel.reserve(keys.size());
+  for(std::size_t i = 0; i < keys.size(); ++i)
+    of_voxel.emplace(keys[i], widest[piece[i]]);
+  return of_voxel;
 }
 
 } // namespace Geodesic_skeleton

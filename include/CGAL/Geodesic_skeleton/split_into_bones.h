@@ -101,25 +101,40 @@ std::vector<double> checked_lengths(const LengthMap& map, std::size_t n, const c
   return lengths;
 }
 
-// The `sheet_half_width_map` of `np` read at each vertex of `skeleton` (vertices numbered 0
-// to n-1); empty without one. Throws when a width is negative or not finite.
-template <typename CurveSkeleton, typename NamedParameters>
-std::vector<double> sheet_half_widths_of(const CurveSkeleton& skeleton, const NamedParameters& np)
+// The optional per-vertex length map `Tag` of `np` read at each vertex of `skeleton`
+// (vertices numbered 0 to n-1); empty without one. Throws, with `error` as the message,
+// when a length is negative or not finite.
+template <typename Tag, typename CurveSkeleton, typename NamedParameters>
+std::vector<double> optional_lengths_of(const CurveSkeleton& skeleton, const NamedParameters& np, const char* error)
 {
-  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, internal_np::sheet_half_width_map_t>::value)
+  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, Tag>::value)
     return {};
   else
-    return checked_lengths(CGAL::parameters::get_parameter(np, internal_np::sheet_half_width_map_tag),
-                           num_vertices(skeleton),
-                           "split_into_bones: the sheet_half_width_map gives a negative or non-finite width");
+    return checked_lengths(CGAL::parameters::get_parameter(np, Tag{}), num_vertices(skeleton), error);
+}
+
+// Per-vertex lengths that a split reads besides the MAT radii; each empty when not given.
+struct Split_length_maps
+{
+  std::vector<double> sheet_half_widths; // `sheet_half_width_map`
+  std::vector<double> piece_radii;       // `piece_radius_map`
+};
+
+template <typename CurveSkeleton, typename NamedParameters>
+Split_length_maps split_length_maps(const CurveSkeleton& skeleton, const NamedParameters& np)
+{
+  return {optional_lengths_of<internal_np::sheet_half_width_map_t>(
+              skeleton, np, "split_into_bones: the sheet_half_width_map gives a negative or non-finite width"),
+          optional_lengths_of<internal_np::piece_radius_map_t>(
+              skeleton, np, "split_into_bones: the piece_radius_map gives a negative or non-finite radius")};
 }
 
 // Algorithm 2 on a skeleton read through its point and radius maps: the body of
 // split_into_bones(), with the settings checked and `control` cleared; throws when a
-// radius is negative or not finite. `sheet_half_widths` is empty or has one width per vertex.
+// radius is negative or not finite. Each of `lengths` is empty or has one value per vertex.
 template <typename CurveSkeleton, typename VertexPointMap, typename RadiusMap, typename Point>
 void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPointMap& point_map,
-                                const RadiusMap& radius_map, const std::vector<double>& sheet_half_widths,
+                                const RadiusMap& radius_map, const Split_length_maps& lengths,
                                 const Bone_splitting_settings& settings, Control_skeleton<Point>& control)
 {
   const std::size_t n = num_vertices(skeleton);
@@ -137,8 +152,8 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
   for(std::size_t v = 0; v < n; ++v)
   {
     length_unit_of[v] = (std::max)(radii_of[v], settings.smallest_radius);
-    if(!sheet_half_widths.empty())
-      length_unit_of[v] = (std::max)(length_unit_of[v], sheet_half_widths[v]);
+    if(!lengths.sheet_half_widths.empty())
+      length_unit_of[v] = (std::max)(length_unit_of[v], lengths.sheet_half_widths[v]);
   }
   Joint_graph<Point> graph;
   std::vector<long> joint_of(n, -1);
@@ -166,7 +181,13 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
       add_joint(v, d >= 3 ? Joint_kind::junction : Joint_kind::end);
   }
 
-  const std::vector<double> largest_radius_of_piece = largest_radius_of_pieces(skeleton, length_unit_of);
+  // The level of detail of a piece: its largest length unit, or the radius that the
+  // `piece_radius_map` gives the piece (the widest sheet before pruning) where larger.
+  std::vector<double> piece_scale_of = length_unit_of;
+  if(!lengths.piece_radii.empty())
+    for(std::size_t v = 0; v < n; ++v)
+      piece_scale_of[v] = (std::max)(piece_scale_of[v], lengths.piece_radii[v]);
+  const std::vector<double> largest_radius_of_piece = largest_radius_of_pieces(skeleton, piece_scale_of);
   for(Skeleton_branch branch : skeleton_branches(skeleton))
   {
     std::vector<std::size_t>& b = branch.vertices;
@@ -220,7 +241,8 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 /// bones longer than `minimum_bone_length_factor` MAT radii (each radius taken as at least
 /// `smallest_radius`, and as at least the sheet's half width where a `sheet_half_width_map`
 /// gives one) and longer than `minimum_bone_length_of_piece_factor` times the largest MAT
-/// radius of its connected component (the rig's level of detail), clearly longer: a part
+/// radius of its connected component (the rig's level of detail; at least what a
+/// `piece_radius_map` gives the component), clearly longer: a part
 /// exactly twice that length stays whole, whatever the rounding; a straight bone longer than
 /// `maximum_bone_length_factor` times the largest MAT radius of its connected component
 /// (the body's thickness; a straight limb has no bend to cut at) is cut
@@ -340,6 +362,22 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 ///     \cgalParamDefault{none (0 everywhere); `extract_control_skeleton()` passes
 ///                       `sheet_half_widths()` of its thinning's sheet radii}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{piece_radius_map}
+///     \cgalParamDescription{a radius per skeleton vertex, in world units, that the largest
+///                           MAT radius of the vertex's connected component (R, which sets the
+///                           rig's level of detail, the longest straight bone and the floor of
+///                           the straightness) is taken as at least: R is the largest of the
+///                           component's radii (as the split measures them) and of this map's
+///                           values over the component. Pruning judges a piece's twigs by the
+///                           widest sheet of the whole piece; a chain that it keeps beside the
+///                           sheet (a bar beside a plate) gets the same level of detail through
+///                           this map. Each value finite and at least 0 (package parameter)}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the skeleton's vertex descriptor
+///                    as key type and `double` as value type}
+///     \cgalParamDefault{none (R from the radii alone); `extract_control_skeleton()` passes
+///                       the half width of the widest sheet of each piece before pruning
+///                       (`widest_sheet_radius_of_pieces()`, read by `sheet_half_widths()`)}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{chord_length_factors}
 ///     \cgalParamDescription{the chord lengths of the accumulation, in MAT radii, each in
 ///                           [0.001, 1000] (package parameter)}
@@ -348,8 +386,8 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// \throws std::invalid_argument when a parameter is out of range, or the radius map or the
-///         sheet half width map gives a negative or non-finite value.
+/// \throws std::invalid_argument when a parameter is out of range, or the radius map, the
+///         sheet half width map or the piece radius map gives a negative or non-finite value.
 ///
 /// \b Complexity: O(N log N * c) for N skeleton vertices and c chords per point in
 /// practice (each recursion level scans its part), plus O(J B log B) to root the J joints
@@ -368,7 +406,7 @@ void split_into_bones(const CurveSkeleton& skeleton, Control_skeleton<Point>& co
   if constexpr(internal::has_radius_map<CurveSkeleton, NamedParameters>())
     internal::split_into_bones_with_maps(skeleton, internal::skeleton_point_map(skeleton, np),
                                          internal::skeleton_radius_map(skeleton, np),
-                                         internal::sheet_half_widths_of(skeleton, np), settings, control);
+                                         internal::split_length_maps(skeleton, np), settings, control);
 }
 
 } // namespace Geodesic_skeleton
