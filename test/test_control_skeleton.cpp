@@ -98,6 +98,15 @@ Control bones_of(const Skeleton& s, const NamedParameters& np = CGAL::parameters
   return control;
 }
 
+// The length of the shortest bone of `c`, along the skeleton (infinite without bones).
+double shortest_bone(const Control& c)
+{
+  double shortest = HUGE_VAL;
+  for(const auto bone : boost::make_iterator_range(edges(c)))
+    shortest = (std::min)(shortest, c[bone].length);
+  return shortest;
+}
+
 // The paper's split alone, without the package's cut of long straight bones and without
 // its floor on bone lengths in the piece's largest radius.
 const auto paper_split = gs::parameters::combine(gs::parameters::maximum_bone_length_factor(0.0),
@@ -584,12 +593,6 @@ BOOST_AUTO_TEST_CASE(no_bone_is_shorter_than_the_level_of_detail_of_its_piece)
   Skeleton s = chain_skeleton(limb, 1.0);
   for(std::size_t v = thick; v < num_vertices(s); ++v)
     s[v].radius = 0.1;
-  auto shortest_bone = [](const Control& c) {
-    double shortest = HUGE_VAL;
-    for(const auto bone : boost::make_iterator_range(edges(c)))
-      shortest = (std::min)(shortest, c[bone].length); // along the skeleton
-    return shortest;
-  };
   const Control paper = bones_of(s, paper_split);
   const Control floored =
       bones_of(s, gs::parameters::combine(gs::parameters::maximum_bone_length_factor(0.0),
@@ -683,12 +686,6 @@ BOOST_AUTO_TEST_CASE(a_piece_radius_sets_the_level_of_detail_of_its_piece)
   for(int i = 0; i <= 200; ++i)
     wave.emplace_back(0.1 * i, 0.3 * std::sin(0.1 * i * pi / 2.), 0);
   const Skeleton s = chain_skeleton(wave, 0.1);
-  auto shortest_bone = [](const Control& c) {
-    double shortest = HUGE_VAL;
-    for(const auto e : CGAL::make_range(edges(c)))
-      shortest = (std::min)(shortest, c[e].length);
-    return shortest;
-  };
   std::vector<double> at_one_vertex(num_vertices(s), 0.0), everywhere(num_vertices(s), 1.0),
       narrow(num_vertices(s), 0.05);
   at_one_vertex[7] = 1.0;

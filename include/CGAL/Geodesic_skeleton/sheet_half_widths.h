@@ -92,23 +92,10 @@ std::vector<double> sheet_half_widths(const CurveSkeleton& curve, const Sheet_ra
 template <typename VoxelSet>
 Sheet_radii widest_sheet_radius_of_pieces(const VoxelSet& skeleton, const Sheet_radii& sheet_radii)
 {
-  std::vector<Voxel_key> keys;
-  skeleton.for_each([&](const Voxel_key& k) { keys.push_back(k); });
-  std::vector<std::size_t> piece;
-  const std::size_t pieces =
-      internal::voxel_components(keys, [&](const Voxel_key& k) { return skeleton.contains(k); }, piece);
-  std::vector<double> widest(pieces, 0.0);
-  for(std::size_t i = 0; i < keys.size(); ++i)
-  {
-    const auto sheet = sheet_radii.find(keys[i]);
-    if(sheet != sheet_radii.end())
-      widest[piece[i]] = (std::max)(widest[piece[i]], sheet->second);
-  }
-  Sheet_radii of_voxel;
-  of_voxel.reserve(keys.size());
-  for(std::size_t i = 0; i < keys.size(); ++i)
-    of_voxel.emplace(keys[i], widest[piece[i]]);
-  return of_voxel;
+  return internal::largest_radius_of_pieces(skeleton, [&](const Voxel_key& k) {
+    const auto sheet = sheet_radii.find(k);
+    return sheet == sheet_radii.end() ? 0.0 : sheet->second;
+  });
 }
 
 } // namespace Geodesic_skeleton

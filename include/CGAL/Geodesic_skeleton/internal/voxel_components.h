@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -80,6 +81,27 @@ inline std::vector<std::vector<Voxel_key>> voxel_components(std::vector<Voxel_ke
   for(std::size_t i = 0; i < points.size(); ++i)
     components[label[i]].push_back(points[i]); // in key order, as `points` is sorted
   return components;
+}
+
+// The largest `radius(k)` over each 26-connected piece of the voxel set `skeleton` (with
+// `for_each()` and `contains()`), recorded for every voxel. Complexity: that of
+// voxel_components(), plus K radius reads and K expected hash insertions.
+template <typename VoxelSet, typename Radius>
+std::unordered_map<Voxel_key, double, Voxel_key_hash> largest_radius_of_pieces(const VoxelSet& skeleton,
+                                                                               const Radius& radius)
+{
+  std::vector<Voxel_key> keys;
+  skeleton.for_each([&](const Voxel_key& k) { keys.push_back(k); });
+  std::vector<std::size_t> piece;
+  const std::size_t pieces = voxel_components(keys, [&](const Voxel_key& k) { return skeleton.contains(k); }, piece);
+  std::vector<double> largest(pieces, 0.0);
+  for(std::size_t i = 0; i < keys.size(); ++i)
+    largest[piece[i]] = (std::max)(largest[piece[i]], radius(keys[i]));
+  std::unordered_map<Voxel_key, double, Voxel_key_hash> of_voxel;
+  of_voxel.reserve(keys.size());
+  for(std::size_t i = 0; i < keys.size(); ++i)
+    of_voxel.emplace(keys[i], largest[piece[i]]);
+  return of_voxel;
 }
 
 } // namespace internal

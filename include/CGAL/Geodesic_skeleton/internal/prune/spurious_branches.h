@@ -209,25 +209,6 @@ Snipping_radii<JudgingRadius, BallRadius> snipping_radii(const JudgingRadius& ju
   return {judging, ball};
 }
 
-// The largest radius of each 26-connected piece of `skeleton`, recorded for every voxel.
-template <typename VoxelSet, typename Radius>
-std::unordered_map<Voxel_key, double, Voxel_key_hash> largest_radius_of_pieces(const VoxelSet& skeleton,
-                                                                               const Radius& radius)
-{
-  std::vector<Voxel_key> keys;
-  skeleton.for_each([&](const Voxel_key& k) { keys.push_back(k); });
-  std::vector<std::size_t> piece;
-  const std::size_t pieces = voxel_components(keys, [&](const Voxel_key& k) { return skeleton.contains(k); }, piece);
-  std::vector<double> largest(pieces, 0.0);
-  for(std::size_t i = 0; i < keys.size(); ++i)
-    largest[piece[i]] = std::max(largest[piece[i]], radius(keys[i]));
-  std::unordered_map<Voxel_key, double, Voxel_key_hash> of_voxel;
-  of_voxel.reserve(keys.size());
-  for(std::size_t i = 0; i < keys.size(); ++i)
-    of_voxel.emplace(keys[i], largest[piece[i]]);
-  return of_voxel;
-}
-
 // How far the balls of `branch` reach out of the rest of the skeleton (voxels): the
 // largest, over the branch's voxels k, of how little k's ball reaches out of a ball that
 // holds k, |k - c| + r(k) - r(c) for a ball centred at c, among
