@@ -609,8 +609,17 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(an_end_branch_is_cut_back_to_where_the_coarser_ske
     BOOST_TEST((pruned_with(three_arms, &on_a_face, 3.0).first == y_arm_up_to(6)));
   }
 
-  // Coarse end points on the tips, or farther than the tolerance from every branch voxel,
-  // cut nothing.
+  // A coarse end point 2 voxels beside the y arm, farther than the tolerance (1) from every
+  // voxel but inside the maximal balls (radius 3) of those near (0, 4, 0): the coarser grid
+  // ended the arm there, across the part's thickness from the finer skeleton (as on the
+  // mid-plane of a slab). The arm runs on past it, and is cut back to the voxel nearest it.
+  const std::vector<std::array<double, 3>> beside_the_arm{tip_of_plus_x_arm, tip_of_minus_x_arm, {2.5, 4.5, 0.5}};
+  const auto [in_a_ball, in_a_ball_report] = pruned_with(three_arms, &beside_the_arm, 1.0);
+  BOOST_TEST((in_a_ball == y_arm_up_to(4)));
+  BOOST_TEST(in_a_ball_report.cut_back_branches == 1u);
+
+  // Coarse end points on the tips, or farther than the tolerance from every branch voxel
+  // and outside their balls (5 voxels from the nearest), cut nothing.
   const std::vector<std::array<double, 3>> on_the_tips{tip_of_plus_x_arm, tip_of_minus_x_arm, tip_of_plus_y_arm};
   const auto [kept, kept_report] = pruned_with(three_arms, &on_the_tips, 2.0);
   BOOST_TEST((kept == uncut));

@@ -87,8 +87,10 @@ struct Pruning_report
 /// coarser skeleton ends (a finer grid carries a branch further, into a hoof's curl, the
 /// fingers of a hand, an open neck): to its voxel nearest the coarse end point nearest its
 /// tip, when one is within the tolerance of the tip, else nearest the first coarse end point
-/// that no end point matches and that the branch passes within the tolerance of; one branch
-/// at a time, the voxel next to its junction staying. Both
+/// that no end point matches and that the branch passes near (within the tolerance of a
+/// branch voxel, or inside its MAT ball: in a thick part the coarser grid may end its
+/// skeleton anywhere across the part's thickness); one branch at a time, the voxel next to
+/// its junction staying. Both
 /// thresholds are ratios of lengths of the shape, so that the same features are kept at
 /// every resolution that resolves them. The radius that judges a voxel is its MAT radius,
 /// or its sheet radius where that is larger (in a thin sheet, the sheet's half width); the
@@ -159,7 +161,8 @@ struct Pruning_report
 ///                           coarse end point must be for the coarser grid to have the branch
 ///                           (the nearest such tip that no other coarse end point is paired with),
 ///                           and how near a voxel of the branch for the branch to be cut back
-///                           to it, in [0, 1e6] (package parameter)}
+///                           to it (or inside the voxel's MAT ball, whichever is larger), in
+///                           [0, 1e6] (package parameter)}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{4}
 ///   \cgalParamNEnd
@@ -282,7 +285,8 @@ Pruning_report prune_skeleton(VoxelSet& skeleton,
     report.swapped_for_coarse_end_branches =
         internal::swap_in_coarse_end_branches(skeleton, *coarse_points, tolerance, snipped_for_swaps);
     // Last, each end branch is cut back to where the coarser skeleton ends.
-    const internal::Cut_back cut = internal::cut_back_to_coarse_end_points(skeleton, *coarse_points, tolerance);
+    const internal::Cut_back cut =
+        internal::cut_back_to_coarse_end_points(skeleton, *coarse_points, tolerance, mat_radius);
     report.cut_back_branches = cut.branches;
     report.cut_back_points = cut.points;
   }

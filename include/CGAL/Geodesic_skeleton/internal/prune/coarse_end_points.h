@@ -134,21 +134,22 @@ struct Cut_back
 };
 
 // The index in `branch` (voxel centres `centre(branch[i])`) of the voxel nearest `point`
-// among all but the last one, if one is within `squared_tolerance`; ties to rounding
-// (clearly_greater()) go to the first, nearest the tip. The coarse end points are
-// converted from the coarser grid's frame, and a coarse voxel centre falls on the face
-// between two voxels of a grid twice as fine: the two are equally near it, and the rounding
-// of a moved mesh would pick either. `branch.size()` when none is.
-template <typename Centre>
-std::size_t nearest_branch_voxel(const std::vector<int>& branch, const Vec3& point, double squared_tolerance,
-                                 const Centre& centre)
+// among all but the last one, if one is within its squared tolerance
+// `squared_tolerance(branch[i])`; ties to rounding (clearly_greater()) go to the first,
+// nearest the tip. The coarse end points are converted from the coarser grid's frame, and a
+// coarse voxel centre falls on the face between two voxels of a grid twice as fine: the two
+// are equally near it, and the rounding of a moved mesh would pick either.
+// `branch.size()` when none is.
+template <typename Centre, typename SquaredTolerance>
+std::size_t nearest_branch_voxel(const std::vector<int>& branch, const Vec3& point,
+                                 const SquaredTolerance& squared_tolerance, const Centre& centre)
 {
   std::size_t nearest = branch.size();
   double nearest_distance = 0;
   for(std::size_t i = 0; i + 1 < branch.size(); ++i)
   {
     const double d = squared_distance3(point, centre(branch[i]));
-    if(d <= squared_tolerance && (nearest == branch.size() || clearly_greater(nearest_distance, d)))
+    if(d <= squared_tolerance(branch[i]) && (nearest == branch.size() || clearly_greater(nearest_distance, d)))
     {
       nearest = i;
       nearest_distance = d;
@@ -163,20 +164,28 @@ std::size_t nearest_branch_voxel(const std::vector<int>& branch, const Vec3& poi
 // end branch (walk_from_end()) is cut back to the branch voxel nearest
 // - the coarse end point nearest the tip, when it matches one: a finer grid reaches further
 //   into a tip (a hoof's curl, a finger) than the coarser one;
-// - else, the coarse end point that no end point matches and that the branch passes within
-//   `tolerance` of, the first met from the tip: a finer grid carries the branch on into
-//   detail that the coarser one smooths away (a hand's fingers, an open neck).
+// - else, the coarse end point that no end point matches and that the branch passes near,
+//   the first met from the tip: a finer grid carries the branch on into detail that the
+//   coarser one smooths away (a hand's fingers, an open neck). Near is within `tolerance`
+//   of a branch voxel, or inside its maximal ball (radius `ball_radius(k)`, voxels): in a
+//   thick part the coarser grid may end its skeleton anywhere across a plateau of the
+//   distance (the mid-plane of a slab, which thinning crosses in voxel order), farther from
+//   the finer skeleton than the tolerance but within the part's thickness.
 // The voxels from the tip up to, not including, that voxel go. The voxel next to the
 // junction (or to the other end of a path) always stays, so no branch goes whole. The
 // first end point in voxel order that has voxels to lose loses them.
-template <typename VoxelSet>
+template <typename VoxelSet, typename BallRadius>
 bool cut_back_one_end_branch(VoxelSet& skeleton, const std::vector<std::array<double, 3>>& coarse,
-                             double tolerance, Cut_back& cut)
+                             double tolerance, const BallRadius& ball_radius, Cut_back& cut)
 {
   const Skeleton_adjacency graph = skeleton_adjacency(skeleton);
   const std::vector<std::vector<int>> around = neighbours_of_nodes(graph);
   const auto centre = [&](int v) { return centre_in_grid(graph.nodes[std::size_t(v)]); };
   const double squared_tolerance = tolerance * tolerance;
+  const auto squared_reach = [&](int v) {
+    const double reach = (std::max)(tolerance, double(ball_radius(graph.nodes[std::size_t(v)])));
+    return reach * reach;
+  };
   std::vector<int> ends;
   for(int v = 0; v < int(graph.nodes.size()); ++v)
     if(around[std::size_t(v)].size() == 1)
@@ -207,11 +216,11 @@ bool cut_back_one_end_branch(VoxelSet& skeleton, const std::vector<std::array<do
     const std::vector<int> branch = walk_from_end(around, ends[e]).nodes;
     std::size_t cut_at = branch.size(); // the first voxel that stays
     if(match[e] != coarse.size())
-      cut_at = nearest_branch_voxel(branch, coarse[match[e]], squared_tolerance, centre);
+      cut_at = nearest_branch_voxel(branch, coarse[match[e]], [&](int) { return squared_tolerance; }, centre);
     else
       for(std::size_t c = 0; c < coarse.size(); ++c)
         if(!coarse_matched[c])
-          cut_at = (std::min)(cut_at, nearest_branch_voxel(branch, coarse[c], squared_tolerance, centre));
+          cut_at = (std::min)(cut_at, nearest_branch_voxel(branch, coarse[c], squared_reach, centre));
     if(cut_at == 0 || cut_at == branch.size())
       continue;
     for(std::size_t i = 0; i < cut_at; ++i)
@@ -224,13 +233,14 @@ bool cut_back_one_end_branch(VoxelSet& skeleton, const std::vector<std::array<do
 }
 
 // Cuts back, one by one, the end branches that reach past where the coarser skeleton ends
-// (cut_back_one_end_branch()), so that the skeleton ends where the coarser one does.
-template <typename VoxelSet>
+// (cut_back_one_end_branch(), with the maximal balls of radius `ball_radius(k)`), so that
+// the skeleton ends where the coarser one does.
+template <typename VoxelSet, typename BallRadius>
 Cut_back cut_back_to_coarse_end_points(VoxelSet& skeleton, const std::vector<std::array<double, 3>>& coarse,
-                                       double tolerance)
+                                       double tolerance, const BallRadius& ball_radius)
 {
   Cut_back cut;
-  while(cut_back_one_end_branch(skeleton, coarse, tolerance, cut))
+  while(cut_back_one_end_branch(skeleton, coarse, tolerance, ball_radius, cut))
   {
   }
   return cut;
