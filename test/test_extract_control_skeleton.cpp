@@ -318,6 +318,16 @@ BOOST_AUTO_TEST_CASE(a_finer_grid_keeps_the_end_points_of_the_default_one)
     BOOST_TEST((p[0] >= box.min.x - 1 && p[0] <= box.max.x + 2 && p[1] >= box.min.y - 1 && p[1] <= box.max.y + 2 &&
                 p[2] >= box.min.z - 1 && p[2] <= box.max.z + 2));
   BOOST_TEST(gs::default_coarse_end_point_tolerance(128, 64) == 8.);
+  // The same end points as part of the level of detail, and a piece point for every voxel
+  // of the coarse skeleton before pruning; the handle is one thick piece, without a sheet
+  // wider than the two rounds of a shell.
+  const auto handle_detail = gs::coarse_skeleton_level_of_detail(handle, 64, handle_at_128.frame());
+  BOOST_REQUIRE(handle_detail.has_value());
+  BOOST_TEST((handle_detail->end_points == *handle_ends));
+  BOOST_TEST(handle_detail->piece_points.size() == handle_detail->piece_half_widths.size());
+  BOOST_TEST(handle_detail->piece_points.size() > handle_ends->size());
+  for(double w : handle_detail->piece_half_widths)
+    BOOST_TEST(w >= 0.);
   test::Soup sheet; // a flat open square: no volume at any resolution
   sheet.add_point(0, 0, 0);
   sheet.add_point(1, 0, 0);
@@ -326,6 +336,7 @@ BOOST_AUTO_TEST_CASE(a_finer_grid_keeps_the_end_points_of_the_default_one)
   sheet.add_quad(0, 1, 2, 3);
   const Mesh open_sheet = test::mesh_of<Mesh>(sheet);
   BOOST_TEST(!gs::coarse_skeleton_end_points(open_sheet, 64, handle_at_128.frame()).has_value());
+  BOOST_TEST(!gs::coarse_skeleton_level_of_detail(open_sheet, 64, handle_at_128.frame()).has_value());
   Mesh nan_cow = cow;
   nan_cow.point(*vertices(nan_cow).begin()) = Point(std::nan(""), 0, 0);
   BOOST_CHECK_THROW(gs::coarse_skeleton_end_points(nan_cow, 64, handle_at_128.frame()), std::invalid_argument);
@@ -715,6 +726,46 @@ BOOST_AUTO_TEST_CASE(a_chain_kept_beside_a_sheet_is_split_at_the_level_of_detail
   BOOST_TEST(control[boost::graph_bundle].roots.size() == 1u);
   BOOST_TEST(num_edges(control) > 0u);
   BOOST_TEST(num_edges(control) < num_edges(along_the_chain));
+}
+
+// Each vertex of a curve skeleton reads the piece width of the coarse piece point nearest the
+// centre of its voxel; without piece points, every width is 0.
+BOOST_AUTO_TEST_CASE(a_vertex_reads_the_width_of_the_nearest_coarse_piece)
+{
+  using Skeleton = gs::Curve_skeleton<Point, boost::graph_traits<Mesh>::vertex_descriptor>;
+  Skeleton curve;
+  for(const gs::Voxel_key& k : {gs::Voxel_key{0, 0, 0}, gs::Voxel_key{10, 0, 0}, gs::Voxel_key{4, 3, 0}})
+    curve[add_vertex(curve)].voxel = k;
+  gs::Coarse_skeleton_level_of_detail coarse;
+  coarse.piece_points = {{1.0, 0.5, 0.5}, {11.0, 0.5, 0.5}, {4.5, 6.5, 0.5}};
+  coarse.piece_half_widths = {1.5, 2.5, 0.0};
+  const std::vector<double> widths = gs::coarse_piece_half_widths(curve, coarse);
+  BOOST_TEST((widths == std::vector<double>{1.5, 2.5, 0.0}));
+  BOOST_TEST((gs::coarse_piece_half_widths(curve, gs::Coarse_skeleton_level_of_detail()) ==
+              std::vector<double>(3, 0.0)));
+}
+
+// boeing.off is plates without thickness beside bars, one piece. The rounds of the burn that
+// measure its widest sheet give a half width of 13.5 at 64 and 9.4 at 128 (a finer grid does
+// not double them), so at 128 the piece was split at a finer level of detail than at 64: 7
+// joints against 5, the chain's corners along the bars cut. With the coarser grid's width as
+// the least piece radius, 128 splits it at the level of detail of 64.
+BOOST_AUTO_TEST_CASE(a_piece_is_split_at_least_at_the_width_the_coarser_grid_measures)
+{
+  const Mesh mesh = test::demo_mesh<Mesh>("boeing.off");
+  gs::Dense_voxel_grid solid;
+  gs::voxelize(mesh, solid, gs::parameters::resolution(128));
+  const auto coarse = gs::coarse_skeleton_level_of_detail(mesh, 64, solid.frame());
+  BOOST_REQUIRE(coarse.has_value());
+  const double widest = *std::max_element(coarse->piece_half_widths.begin(), coarse->piece_half_widths.end());
+  BOOST_TEST(widest > 60 * solid.frame().voxel_size()); // 13.5, voxels of 0.1875
+
+  Control at_64, at_128;
+  gs::extract_control_skeleton(mesh, at_64);
+  gs::extract_control_skeleton(mesh, at_128, gs::parameters::resolution(128));
+  const double ratio = double(num_vertices(at_128)) / double(num_vertices(at_64));
+  BOOST_TEST(ratio >= 0.75);
+  BOOST_TEST(ratio <= 1.25);
 }
 
 BOOST_AUTO_TEST_CASE(the_public_stages_composed_by_hand_give_the_same_skeleton)

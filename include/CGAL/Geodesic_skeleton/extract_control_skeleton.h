@@ -198,14 +198,16 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 /// within a voxel of each other, the solid joins them).
 ///
 /// At a resolution finer than `level_of_detail_resolution` (default: the default
-/// resolution, 64), `coarse_skeleton_end_points()` first runs the same voxel stages at that
-/// resolution, up to `prune_skeleton()`, and the end points of that skeleton's graph are
+/// resolution, 64), `coarse_skeleton_level_of_detail()` first runs the same voxel stages at
+/// that resolution, up to `prune_skeleton()`, and the end points of that skeleton's graph are
 /// given to the finer `prune_skeleton()` (its `coarse_end_points`, with
 /// `default_coarse_end_point_tolerance()`, 4 voxels of the coarser grid; none when the mesh
 /// encloses no volume there): the finer skeleton then keeps no more end points than the
 /// coarser one has, where its extra end branches are detail under 3 times the level of
 /// detail (the resolution is a sampling choice; which branches the rig has should not
-/// depend on it).
+/// depend on it). The widest sheet of each piece of that skeleton is read at the nearest
+/// vertices of the curve skeleton (`coarse_piece_half_widths()`): the piece radius that
+/// `split_into_bones()` gets is at least that.
 ///
 /// Between `smooth_skeleton()` and `split_into_bones()`, `move_skeleton_inside()`: when the
 /// mesh is a closed triangle mesh, a point of the curve skeleton that lies outside it
@@ -412,9 +414,9 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   // one are snipped as long as the skeleton has more end points than it has there.
   report.level_of_detail_resolution = choose_parameter(get_parameter(np, internal_np::level_of_detail_resolution_tag),
                                                        default_voxel_resolution);
-  std::optional<std::vector<std::array<double, 3>>> coarse_ends;
+  std::optional<Coarse_skeleton_level_of_detail> coarse;
   if(report.level_of_detail_resolution > 0 && report.level_of_detail_resolution < report.resolution)
-    coarse_ends = coarse_skeleton_end_points(mesh, report.level_of_detail_resolution, solid.frame(), np);
+    coarse = coarse_skeleton_level_of_detail(mesh, report.level_of_detail_resolution, solid.frame(), np);
   clock.finished("level_of_detail");
 
   report.pruning = prune_skeleton(
@@ -422,9 +424,9 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
       parameters::combine(
           parameters::mat_radius_map(mat_radius_in_voxels_map(distances)),
           parameters::sheet_radius_map(sheet_radius_in_voxels_map(sheet_radii)),
-          parameters::coarse_end_points(coarse_ends ? &std::as_const(*coarse_ends) : nullptr),
+          parameters::coarse_end_points(coarse ? &std::as_const(coarse->end_points) : nullptr),
           parameters::coarse_end_point_tolerance(
-              coarse_ends ? default_coarse_end_point_tolerance(report.resolution, report.level_of_detail_resolution)
+              coarse ? default_coarse_end_point_tolerance(report.resolution, report.level_of_detail_resolution)
                           : parameter_ranges::coarse_end_point_tolerance.default_value),
           np));
   clock.finished("prune");
@@ -456,9 +458,16 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   report.smallest_radius = choose_parameter(get_parameter(np, internal_np::smallest_radius_tag),
                                             longest_extent / (2. * default_voxel_resolution));
   // A thin sheet's chain is split in lengths of the sheet's width, and a piece at the level
-  // of detail of its widest sheet, as pruning judged them.
+  // of detail of its widest sheet, as pruning judged them, and at least as wide as the
+  // coarser grid measures it.
   const std::vector<double> sheet_widths = sheet_half_widths(curve, sheet_radii, report.voxel_size);
-  const std::vector<double> piece_widths = sheet_half_widths(curve, widest_sheet_of_piece, report.voxel_size);
+  std::vector<double> piece_widths = sheet_half_widths(curve, widest_sheet_of_piece, report.voxel_size);
+  if(coarse)
+  {
+    const std::vector<double> coarse_widths = coarse_piece_half_widths(curve, *coarse);
+    for(std::size_t v = 0; v < piece_widths.size(); ++v)
+      piece_widths[v] = (std::max)(piece_widths[v], coarse_widths[v]);
+  }
   split_into_bones(curve, out,
                    parameters::combine(parameters::smallest_radius(report.smallest_radius),
                                        parameters::sheet_half_width_map(CGAL::make_property_map(sheet_widths)),

@@ -29,6 +29,13 @@ namespace internal {
 // these measure a sheet's width.
 constexpr double shell_rounds = 2;
 
+// The half width (world units) of a sheet of sheet radius `rounds` on a grid of voxels
+// `voxel_size` long: (rounds - shell_rounds) voxels, at least 0.
+inline double sheet_half_width(double rounds, double voxel_size)
+{
+  return (std::max)(0.0, rounds - shell_rounds) * voxel_size;
+}
+
 } // namespace internal
 
 /// \ingroup PkgGeodesicSkeletonRef
@@ -63,7 +70,7 @@ std::vector<double> sheet_half_widths(const CurveSkeleton& curve, const Sheet_ra
   {
     const auto sheet = sheet_radii.find(curve[v].voxel);
     if(sheet != sheet_radii.end())
-      widths[v] = (std::max)(0.0, sheet->second - internal::shell_rounds) * voxel_size;
+      widths[v] = internal::sheet_half_width(sheet->second, voxel_size);
   }
   return widths;
 }
