@@ -427,7 +427,7 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
           parameters::coarse_end_points(coarse ? &std::as_const(coarse->end_points) : nullptr),
           parameters::coarse_end_point_tolerance(
               coarse ? default_coarse_end_point_tolerance(report.resolution, report.level_of_detail_resolution)
-                          : parameter_ranges::coarse_end_point_tolerance.default_value),
+                     : parameter_ranges::coarse_end_point_tolerance.default_value),
           np));
   clock.finished("prune");
 
