@@ -223,8 +223,8 @@ std::vector<double> coarse_piece_half_widths(const CurveSkeleton& curve, const C
   const typename Search::Distance distance(point_of_index);
   for(std::size_t v = 0; v < widths.size(); ++v)
   {
-    const Voxel_key& k = curve[v].voxel;
-    const Search nearest(tree, Point(k.x + 0.5, k.y + 0.5, k.z + 0.5), 1, 0, true, distance);
+    const internal::Vec3 c = internal::centre_in_grid(curve[v].voxel);
+    const Search nearest(tree, Point(c[0], c[1], c[2]), 1, 0, true, distance);
     widths[v] = coarse.piece_half_widths[nearest.begin()->first];
   }
   return widths;
