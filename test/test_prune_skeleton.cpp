@@ -646,6 +646,24 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(an_end_branch_is_cut_back_to_where_the_coarser_ske
   BOOST_TEST(to_the_first.size() == 15u);
   BOOST_TEST(to_the_first.count(Voxel_key{4, 0, 0}) == 1u);
   BOOST_TEST(to_the_first.count(Voxel_key{5, 0, 0}) == 0u);
+
+  // The coarser skeleton's two ends both near the path's -x end (a U whose ends lie close,
+  // which the finer grid thinned straight): that end matches the one on its tip, and the +x
+  // end runs on past the other (at -6.5, inside the balls of the voxels around it), but is
+  // cut back at most to the path's middle, where no coarse end point is near. The path
+  // stays whole; cut back to (-7, 0, 0), it would keep 4 of its 21 voxels.
+  const std::vector<std::array<double, 3>> both_near_one_end{{-9.5, 0.5, 0.5}, {-6.5, 0.5, 0.5}};
+  const auto [whole, whole_report] = pruned_with(path, &both_near_one_end, 2.0);
+  BOOST_TEST(whole.size() == 21u);
+  BOOST_TEST(whole_report.cut_back_branches == 0u);
+
+  // A coarse end point just past the middle from the +x end: that end is cut back to the
+  // middle voxel, (0, 0, 0), the nearest voxel of its half, and no further once that voxel
+  // is its tip (the middle is the path's as it was before any cut).
+  const std::vector<std::array<double, 3>> start_and_past_the_middle{{-9.5, 0.5, 0.5}, {-0.5, 0.5, 0.5}};
+  const auto [to_the_middle, to_the_middle_report] = pruned_with(path, &start_and_past_the_middle, 2.0);
+  BOOST_TEST((to_the_middle == first_half));
+  BOOST_TEST(to_the_middle_report.cut_back_points == 10u);
 }
 
 // Four straight arms from a junction voxel at the origin: 8 voxels along +x, -x and -y,

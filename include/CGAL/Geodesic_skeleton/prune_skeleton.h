@@ -90,7 +90,7 @@ struct Pruning_report
 /// that no end point matches and that the branch passes near (within the tolerance of a
 /// branch voxel, or inside its MAT ball: in a thick part the coarser grid may end its
 /// skeleton anywhere across the part's thickness); one branch at a time, the voxel next to
-/// its junction staying. Both
+/// its junction staying (a path without junction, from each end up to its middle). Both
 /// thresholds are ratios of lengths of the shape, so that the same features are kept at
 /// every resolution that resolves them. The radius that judges a voxel is its MAT radius,
 /// or its sheet radius where that is larger (in a thin sheet, the sheet's half width); the
@@ -102,7 +102,7 @@ struct Pruning_report
 /// region's centroid and a snipped branch hangs by one junction), never opens a cycle
 /// that passes through a region (the cycle's two terminators stay linked through the
 /// centroid) and never snips a path component (no junction); with `coarse_end_points`, a
-/// path can be cut back from an end, never below two voxels.
+/// path can be cut back from each end, never past its middle voxel (before the cuts).
 ///
 /// \tparam VoxelSet a model of `VoxelSet`; read through `for_each()` and `contains()`
 ///         (no dense copy: the classes and the regions are kept in hash maps by key).

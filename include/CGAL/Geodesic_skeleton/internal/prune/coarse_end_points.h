@@ -158,10 +158,51 @@ std::size_t nearest_branch_voxel(const std::vector<int>& branch, const Vec3& poi
   return nearest;
 }
 
+// The middle voxels of the paths of `skeleton`'s graph (its components without junction):
+// one for a path of an odd number of voxels, the two around its middle for an even one,
+// sorted. Cutting back never takes an end of a path past its middle as it was before any
+// cut (end_branch_to_cut()): the other half is the other end's. When the coarser skeleton
+// has both its ends near one end of a path (a U whose ends lie close, which the finer grid
+// thinned straight), the far end would be cut back to the one nearer the other, the near
+// end to its own, and a few voxels of the path would be left.
+template <typename VoxelSet>
+std::vector<Voxel_key> path_middles(const VoxelSet& skeleton)
+{
+  const Skeleton_adjacency graph = skeleton_adjacency(skeleton);
+  const std::vector<std::vector<int>> around = neighbours_of_nodes(graph);
+  std::vector<Voxel_key> middles;
+  for(int v = 0; v < int(graph.nodes.size()); ++v)
+    if(around[std::size_t(v)].size() == 1)
+    {
+      const Walk_from_end walk = walk_from_end(around, v);
+      if(around[std::size_t(walk.stop)].size() == 1) // a path of walk.nodes.size() + 1 voxels
+        middles.push_back(graph.nodes[std::size_t(walk.nodes[walk.nodes.size() / 2])]);
+    }
+  std::sort(middles.begin(), middles.end());
+  middles.erase(std::unique(middles.begin(), middles.end()), middles.end());
+  return middles;
+}
+
+// The voxels of the end branch from `end` that cutting back may remove, the tip first, and
+// the voxel after them, which stays: the branch up to its junction (walk_from_end()), on a
+// path up to and including the first of `middles` (path_middles()) met.
+inline std::vector<int> end_branch_to_cut(const Skeleton_adjacency& graph, const std::vector<std::vector<int>>& around,
+                                          int end, const std::vector<Voxel_key>& middles)
+{
+  std::vector<int> branch = walk_from_end(around, end).nodes;
+  for(std::size_t i = 0; i + 2 < branch.size(); ++i)
+    if(std::binary_search(middles.begin(), middles.end(), graph.nodes[std::size_t(branch[i])]))
+    {
+      branch.resize(i + 2);
+      break;
+    }
+  return branch;
+}
+
 // Cuts back one end branch of the skeleton's graph so that it ends where the coarser
 // skeleton ends, and returns false when there is none to cut. An end point matches the
 // coarse end points within `tolerance` of it (as Coarse_end_point_guide matches them). Its
-// end branch (walk_from_end()) is cut back to the branch voxel nearest
+// end branch (end_branch_to_cut()) is cut back to the branch voxel nearest
 // - the coarse end point nearest the tip, when it matches one: a finer grid reaches further
 //   into a tip (a hoof's curl, a finger) than the coarser one;
 // - else, the coarse end point that no end point matches and that the branch passes near,
@@ -172,11 +213,12 @@ std::size_t nearest_branch_voxel(const std::vector<int>& branch, const Vec3& poi
 //   distance (the mid-plane of a slab, which thinning crosses in voxel order), farther from
 //   the finer skeleton than the tolerance but within the part's thickness.
 // The voxels from the tip up to, not including, that voxel go. The voxel next to the
-// junction (or to the other end of a path) always stays, so no branch goes whole. The
+// junction always stays, so no branch goes whole, and so does a path's middle voxel. The
 // first end point in voxel order that has voxels to lose loses them.
 template <typename VoxelSet, typename BallRadius>
 bool cut_back_one_end_branch(VoxelSet& skeleton, const std::vector<std::array<double, 3>>& coarse,
-                             double tolerance, const BallRadius& ball_radius, Cut_back& cut)
+                             double tolerance, const BallRadius& ball_radius,
+                             const std::vector<Voxel_key>& middles, Cut_back& cut)
 {
   const Skeleton_adjacency graph = skeleton_adjacency(skeleton);
   const std::vector<std::vector<int>> around = neighbours_of_nodes(graph);
@@ -213,7 +255,7 @@ bool cut_back_one_end_branch(VoxelSet& skeleton, const std::vector<std::array<do
 
   for(std::size_t e = 0; e < ends.size(); ++e)
   {
-    const std::vector<int> branch = walk_from_end(around, ends[e]).nodes;
+    const std::vector<int> branch = end_branch_to_cut(graph, around, ends[e], middles);
     std::size_t cut_at = branch.size(); // the first voxel that stays
     if(match[e] != coarse.size())
       cut_at = nearest_branch_voxel(branch, coarse[match[e]], [&](int) { return squared_tolerance; }, centre);
@@ -234,13 +276,15 @@ bool cut_back_one_end_branch(VoxelSet& skeleton, const std::vector<std::array<do
 
 // Cuts back, one by one, the end branches that reach past where the coarser skeleton ends
 // (cut_back_one_end_branch(), with the maximal balls of radius `ball_radius(k)`), so that
-// the skeleton ends where the coarser one does.
+// the skeleton ends where the coarser one does; a path is cut from each end up to its
+// middle at most (path_middles()).
 template <typename VoxelSet, typename BallRadius>
 Cut_back cut_back_to_coarse_end_points(VoxelSet& skeleton, const std::vector<std::array<double, 3>>& coarse,
                                        double tolerance, const BallRadius& ball_radius)
 {
   Cut_back cut;
-  while(cut_back_one_end_branch(skeleton, coarse, tolerance, ball_radius, cut))
+  const std::vector<Voxel_key> middles = path_middles(skeleton);
+  while(cut_back_one_end_branch(skeleton, coarse, tolerance, ball_radius, middles, cut))
   {
   }
   return cut;
