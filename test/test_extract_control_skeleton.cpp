@@ -20,6 +20,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -47,6 +48,27 @@ Extracted extract(const FaceGraph& mesh)
   Extracted e;
   e.report = gs::extract_control_skeleton(mesh, e.control);
   return e;
+}
+
+using Curve = gs::Curve_skeleton<Point, boost::graph_traits<Mesh>::vertex_descriptor>;
+
+// Checks that a curve skeleton and a rig made by composing the stages by hand are exactly
+// those that extract_control_skeleton() gave.
+void check_same_curve_and_rig(const Curve& curve, const Curve& expected_curve, const Control& rig,
+                              const Control& expected)
+{
+  BOOST_REQUIRE(num_vertices(curve) == num_vertices(expected_curve));
+  for(std::size_t v = 0; v < num_vertices(curve); ++v)
+    BOOST_TEST((curve[v].point == expected_curve[v].point), "curve point " << v);
+  BOOST_REQUIRE(num_vertices(rig) == num_vertices(expected));
+  for(std::size_t j = 0; j < num_vertices(rig); ++j)
+  {
+    BOOST_TEST((rig[j].point == expected[j].point), "joint " << j);
+    BOOST_TEST(rig[j].radius == expected[j].radius, "joint " << j);
+    BOOST_TEST(gs::parent_joint(j, rig) == gs::parent_joint(j, expected), "joint " << j);
+  }
+  BOOST_TEST(num_edges(rig) == num_edges(expected));
+  BOOST_TEST(rig[boost::graph_bundle].cut_bones.size() == expected[boost::graph_bundle].cut_bones.size());
 }
 
 // The fraction of joints inside the mesh, by the non-zero winding rule (inside both parts
@@ -821,21 +843,79 @@ BOOST_AUTO_TEST_CASE(the_public_stages_composed_by_hand_give_the_same_skeleton)
       BOOST_TEST(cut == r.spurious_cycles_cut);
       cycles_cut += cut;
       BOOST_TEST(moved.size() == r.curve_points_moved_inside);
-      BOOST_REQUIRE(num_vertices(curve) == num_vertices(expected_curve));
-      for(std::size_t v = 0; v < num_vertices(curve); ++v)
-        BOOST_TEST((curve[v].point == expected_curve[v].point), "curve point " << v);
-      BOOST_REQUIRE(num_vertices(composed) == num_vertices(expected));
-      for(std::size_t j = 0; j < num_vertices(composed); ++j)
-      {
-        BOOST_TEST((composed[j].point == expected[j].point), "joint " << j);
-        BOOST_TEST(composed[j].radius == expected[j].radius, "joint " << j);
-        BOOST_TEST(gs::parent_joint(j, composed) == gs::parent_joint(j, expected), "joint " << j);
-      }
-      BOOST_TEST(num_edges(composed) == num_edges(expected));
-      BOOST_TEST(composed[boost::graph_bundle].cut_bones.size() == expected[boost::graph_bundle].cut_bones.size());
+      check_same_curve_and_rig(curve, expected_curve, composed, expected);
     }
   }
   BOOST_TEST(cycles_cut > 0u); // the composition includes a cut
+}
+
+BOOST_AUTO_TEST_CASE(the_stages_composed_by_hand_on_a_finer_grid_give_the_same_skeleton)
+{
+  // Above its level_of_detail_resolution (the default resolution), extract_control_skeleton()
+  // also runs the voxel stages at that resolution, and their skeleton guides pruning and
+  // the split on the finer grid; the settings measured in voxels scale with the grid. The
+  // same calls made by hand give exactly its output. At 128 the cow's pruning swaps a branch
+  // and cuts one back to where the skeleton at 64 ends.
+  const Mesh mesh = test::demo_mesh<Mesh>("cow.off");
+  Control expected;
+  Curve expected_curve;
+  const gs::Control_skeleton_report r = gs::extract_control_skeleton(
+      mesh, expected, gs::parameters::combine(gs::parameters::resolution(128), gs::parameters::curve_skeleton_output(&expected_curve)));
+
+  //! [composed_chain_on_a_finer_grid]
+  const int resolution = 128, coarse_resolution = gs::default_voxel_resolution;
+  gs::Dense_voxel_grid solid;
+  gs::Voxelized_surface surface;
+  gs::voxelize(mesh, solid, gs::parameters::combine(gs::parameters::resolution(resolution),
+                                                    gs::parameters::voxelized_surface_output(&surface)));
+  const auto with_surface = gs::parameters::voxelized_surface(&std::as_const(surface));
+  const gs::Voxel_distance_field distances = gs::distance_transform(solid);
+  gs::Sheet_radii sheet_radii;
+  gs::thin(solid, distances,
+           gs::parameters::combine(gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(sheet_radii)),
+                                   gs::parameters::thin_part_radius(gs::default_thin_part_radius(resolution))));
+  gs::Sparse_voxel_set skeleton;
+  skeleton.reset(solid.frame(), solid.bounding_box());
+  solid.for_each([&](const gs::Voxel_key& k) { skeleton.insert(k); });
+  gs::remove_small_pieces(skeleton, distances);
+  gs::cut_spurious_cycles(skeleton, mesh, with_surface);
+  const gs::Sheet_radii widest_sheet = gs::widest_sheet_radius_of_pieces(skeleton, sheet_radii);
+  // The skeleton at the coarser resolution, in this grid's coordinates: its end points bound
+  // the end points that pruning keeps, and its pieces' widest sheets the level of detail.
+  const std::optional<gs::Coarse_skeleton_level_of_detail> coarse =
+      gs::coarse_skeleton_level_of_detail(mesh, coarse_resolution, solid.frame());
+  gs::prune_skeleton(
+      skeleton,
+      gs::parameters::combine(
+          gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(distances)),
+          gs::parameters::sheet_radius_map(gs::sheet_radius_in_voxels_map(sheet_radii)),
+          gs::parameters::coarse_end_points(coarse ? &coarse->end_points : nullptr),
+          gs::parameters::coarse_end_point_tolerance(gs::default_coarse_end_point_tolerance(resolution, coarse_resolution))));
+  Curve curve;
+  gs::to_graph(skeleton, distances, mesh, curve, with_surface);
+  gs::smooth_skeleton(curve, gs::parameters::smoothing_window(gs::default_smoothing_window(resolution)));
+  gs::move_skeleton_inside(mesh, curve, with_surface);
+  const double voxel_size = solid.frame().voxel_size();
+  const std::vector<double> sheet_widths = gs::sheet_half_widths(curve, sheet_radii, voxel_size);
+  std::vector<double> piece_widths = gs::sheet_half_widths(curve, widest_sheet, voxel_size);
+  if(coarse) // a piece is at least as wide as the coarser grid measures it
+  {
+    const std::vector<double> coarse_widths = gs::coarse_piece_half_widths(curve, *coarse);
+    for(std::size_t v = 0; v < piece_widths.size(); ++v)
+      piece_widths[v] = (std::max)(piece_widths[v], coarse_widths[v]);
+  }
+  // Parts thinner than half a voxel of the coarser grid get the joints of parts that thick.
+  const double smallest_radius = voxel_size * resolution / (2. * coarse_resolution);
+  Control composed;
+  gs::split_into_bones(curve, composed,
+                       gs::parameters::combine(gs::parameters::smallest_radius(smallest_radius),
+                                               gs::parameters::sheet_half_width_map(CGAL::make_property_map(sheet_widths)),
+                                               gs::parameters::piece_radius_map(CGAL::make_property_map(piece_widths))));
+  //! [composed_chain_on_a_finer_grid]
+
+  BOOST_TEST(r.level_of_detail_resolution == coarse_resolution);
+  BOOST_TEST(r.pruning.swapped_for_coarse_end_branches + r.pruning.cut_back_branches > 0u);
+  check_same_curve_and_rig(curve, expected_curve, composed, expected);
 }
 
 BOOST_AUTO_TEST_CASE(move_skeleton_inside_on_its_own)
