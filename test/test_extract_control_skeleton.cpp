@@ -393,7 +393,6 @@ BOOST_AUTO_TEST_CASE(the_elephant_gets_five_to_twelve_end_points)
 // surface (the midpoint of a sliver between two crossings of a grid line at an edge).
 BOOST_AUTO_TEST_CASE(every_curve_skeleton_point_and_joint_is_inside_a_closed_mesh)
 {
-  using Skeleton = gs::Curve_skeleton<Point, boost::graph_traits<Mesh>::vertex_descriptor>;
   std::size_t moved = 0;
   for(const char* name : {"cow.off", "elephant.off", "bones.off"})
   {
@@ -403,7 +402,7 @@ BOOST_AUTO_TEST_CASE(every_curve_skeleton_point_and_joint_is_inside_a_closed_mes
       BOOST_TEST_CONTEXT(name << " at resolution " << resolution)
       {
         Control c;
-        Skeleton curve;
+        Curve curve;
         const gs::Control_skeleton_report r = gs::extract_control_skeleton(
             mesh, c,
             gs::parameters::combine(gs::parameters::resolution(resolution), gs::parameters::curve_skeleton_output(&curve)));
@@ -668,7 +667,7 @@ BOOST_AUTO_TEST_CASE(the_report_and_the_visitor_see_every_stage)
       "voxelize", "distance_transform", "thin",   "thinned_graph",       "remove_small_pieces", "cut_spurious_cycles",
       "level_of_detail", "prune", "to_graph", "smooth", "curve_points_inside", "split_into_bones", "reeb_graph"};
   std::vector<std::string> stages;
-  gs::Curve_skeleton<Point, boost::graph_traits<Mesh>::vertex_descriptor> curve;
+  Curve curve;
   gs::Reeb_graph<Mesh> reeb;
   Control c;
   const Mesh cow = test::demo_mesh<Mesh>("cow.off");
@@ -703,10 +702,9 @@ BOOST_AUTO_TEST_CASE(a_null_output_pointer_asks_for_nothing)
 {
   // The same call with null output pointers makes no Reeb graph and no thinned graph, and
   // the same control skeleton; with real pointers it makes both.
-  using Skeleton = gs::Curve_skeleton<Point, boost::graph_traits<Mesh>::vertex_descriptor>;
   const Mesh cow = test::demo_mesh<Mesh>("cow.off");
   Control with_outputs, without_outputs;
-  Skeleton thinned;
+  Curve thinned;
   gs::Reeb_graph<Mesh> reeb;
   const gs::Control_skeleton_report asked = gs::extract_control_skeleton(
       cow, with_outputs,
@@ -714,9 +712,9 @@ BOOST_AUTO_TEST_CASE(a_null_output_pointer_asks_for_nothing)
                               gs::parameters::reeb_graph_output(&reeb)));
   const gs::Control_skeleton_report not_asked = gs::extract_control_skeleton(
       cow, without_outputs,
-      gs::parameters::combine(gs::parameters::thinned_skeleton_output(static_cast<Skeleton*>(nullptr)),
+      gs::parameters::combine(gs::parameters::thinned_skeleton_output(static_cast<Curve*>(nullptr)),
                               gs::parameters::reeb_graph_output(static_cast<gs::Reeb_graph<Mesh>*>(nullptr)),
-                              gs::parameters::curve_skeleton_output(static_cast<Skeleton*>(nullptr))));
+                              gs::parameters::curve_skeleton_output(static_cast<Curve*>(nullptr))));
   auto timed_reeb_graph = [](const gs::Control_skeleton_report& r) {
     return std::any_of(r.timings_ms.begin(), r.timings_ms.end(), [](const auto& t) { return t.first == "reeb_graph"; });
   };
@@ -737,10 +735,9 @@ BOOST_AUTO_TEST_CASE(a_null_output_pointer_asks_for_nothing)
 // own curve skeleton gets from a split that knows only the radii along the chain.
 BOOST_AUTO_TEST_CASE(a_chain_kept_beside_a_sheet_is_split_at_the_level_of_detail_of_the_sheet)
 {
-  using Skeleton = gs::Curve_skeleton<Point, boost::graph_traits<Mesh>::vertex_descriptor>;
   const Mesh mesh = test::demo_mesh<Mesh>("boeing.off");
   Control control;
-  Skeleton curve;
+  Curve curve;
   const gs::Control_skeleton_report r = gs::extract_control_skeleton(
       mesh, control, gs::parameters::combine(gs::parameters::resolution(128), gs::parameters::curve_skeleton_output(&curve)));
   Control along_the_chain;
@@ -754,8 +751,7 @@ BOOST_AUTO_TEST_CASE(a_chain_kept_beside_a_sheet_is_split_at_the_level_of_detail
 // centre of its voxel; without piece points, every width is 0.
 BOOST_AUTO_TEST_CASE(a_vertex_reads_the_width_of_the_nearest_coarse_piece)
 {
-  using Skeleton = gs::Curve_skeleton<Point, boost::graph_traits<Mesh>::vertex_descriptor>;
-  Skeleton curve;
+  Curve curve;
   for(const gs::Voxel_key& k : {gs::Voxel_key{0, 0, 0}, gs::Voxel_key{10, 0, 0}, gs::Voxel_key{4, 3, 0}})
     curve[add_vertex(curve)].voxel = k;
   gs::Coarse_skeleton_level_of_detail coarse;
@@ -794,7 +790,6 @@ BOOST_AUTO_TEST_CASE(the_public_stages_composed_by_hand_give_the_same_skeleton)
 {
   // extract_control_skeleton() is a composition of the public stages: the same calls
   // made by hand give exactly its output. man.off has near contacts whose cycles are cut.
-  using Skeleton = gs::Curve_skeleton<Point, boost::graph_traits<Mesh>::vertex_descriptor>;
   std::size_t cycles_cut = 0;
   for(const char* name : {"cow.off", "man.off"})
   {
@@ -802,7 +797,7 @@ BOOST_AUTO_TEST_CASE(the_public_stages_composed_by_hand_give_the_same_skeleton)
     {
       const Mesh mesh = test::demo_mesh<Mesh>(name);
       Control expected;
-      Skeleton expected_curve;
+      Curve expected_curve;
       const gs::Control_skeleton_report r =
           gs::extract_control_skeleton(mesh, expected, gs::parameters::curve_skeleton_output(&expected_curve));
 
@@ -825,7 +820,7 @@ BOOST_AUTO_TEST_CASE(the_public_stages_composed_by_hand_give_the_same_skeleton)
       gs::prune_skeleton(skeleton,
                          gs::parameters::combine(gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(distances)),
                                                  gs::parameters::sheet_radius_map(gs::sheet_radius_in_voxels_map(sheet_radii))));
-      Skeleton curve;
+      Curve curve;
       gs::to_graph(skeleton, distances, mesh, curve, with_surface);
       gs::smooth_skeleton(curve);
       const std::vector<std::size_t> moved = gs::move_skeleton_inside(mesh, curve, with_surface);
@@ -904,16 +899,17 @@ BOOST_AUTO_TEST_CASE(the_stages_composed_by_hand_on_a_finer_grid_give_the_same_s
     for(std::size_t v = 0; v < piece_widths.size(); ++v)
       piece_widths[v] = (std::max)(piece_widths[v], coarse_widths[v]);
   }
-  // Parts thinner than half a voxel of the coarser grid get the joints of parts that thick.
-  const double smallest_radius = voxel_size * resolution / (2. * coarse_resolution);
+  // Parts thinner than half a voxel of the default grid get the joints of parts that thick.
   Control composed;
   gs::split_into_bones(curve, composed,
-                       gs::parameters::combine(gs::parameters::smallest_radius(smallest_radius),
+                       gs::parameters::combine(gs::parameters::smallest_radius(gs::default_smallest_radius(voxel_size, resolution)),
                                                gs::parameters::sheet_half_width_map(CGAL::make_property_map(sheet_widths)),
                                                gs::parameters::piece_radius_map(CGAL::make_property_map(piece_widths))));
   //! [composed_chain_on_a_finer_grid]
 
   BOOST_TEST(r.level_of_detail_resolution == coarse_resolution);
+  BOOST_TEST(r.smallest_radius == gs::default_smallest_radius(voxel_size, resolution));
+  BOOST_TEST(r.smallest_radius == voxel_size); // half a voxel of a grid half as fine
   BOOST_TEST(r.pruning.swapped_for_coarse_end_branches + r.pruning.cut_back_branches > 0u);
   check_same_curve_and_rig(curve, expected_curve, composed, expected);
 }
@@ -923,10 +919,9 @@ BOOST_AUTO_TEST_CASE(move_skeleton_inside_on_its_own)
   // Without a voxelized surface, move_skeleton_inside() builds its own and still puts
   // every point inside; a surface in another frame than asked is refused by the stages
   // that take it; an open mesh moves nothing.
-  using Skeleton = gs::Curve_skeleton<Point, boost::graph_traits<Mesh>::vertex_descriptor>;
   const Mesh cow = test::demo_mesh<Mesh>("cow.off");
   Control c;
-  Skeleton curve;
+  Curve curve;
   gs::extract_control_skeleton(cow, c, gs::parameters::curve_skeleton_output(&curve));
   // Push every point 3 % of the cow's size along x: some leave the mesh.
   const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(cow);

@@ -296,7 +296,8 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 ///     \cgalParamDefault{half a voxel of the default grid: the mesh's longest principal
 ///                       extent / (2 `default_voxel_resolution`), the smallest MAT radius at
 ///                       the default resolution, so that the joints of thin parts do not
-///                       multiply at a finer resolution; 0 gives the MAT radius as it is}
+///                       multiply at a finer resolution (`default_smallest_radius()`); 0
+///                       gives the MAT radius as it is}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{visitor}
 ///     \cgalParamDescription{an object with `stage_finished(stage, milliseconds)`, called
@@ -454,9 +455,8 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   // Parts thinner than half a voxel of the default grid get the joints of parts that thick,
   // whatever the resolution: a finer grid measures them thinner, and the rig's joints should
   // not multiply with it (at the default resolution no MAT radius is smaller).
-  const double longest_extent = report.voxel_size * double(report.resolution);
   report.smallest_radius = choose_parameter(get_parameter(np, internal_np::smallest_radius_tag),
-                                            longest_extent / (2. * default_voxel_resolution));
+                                            default_smallest_radius(report.voxel_size, report.resolution));
   // A thin sheet's chain is split in lengths of the sheet's width, and a piece at the level
   // of detail of its widest sheet, as pruning judged them, and at least as wide as the
   // coarser grid measures it.

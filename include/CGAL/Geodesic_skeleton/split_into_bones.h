@@ -230,6 +230,23 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
 } // namespace internal
 
 /// \ingroup PkgGeodesicSkeletonRef
+/// The `smallest_radius` that `extract_control_skeleton()` gives `split_into_bones()` on a
+/// grid of `resolution` voxels of `voxel_size` along the longest extent: half a voxel of
+/// the default grid, (`voxel_size` `resolution`) / (2 `default_voxel_resolution`), the
+/// smallest MAT radius at the default resolution. A finer grid measures thin parts thinner,
+/// and the joints of a thin part should not multiply with the resolution; at the default
+/// resolution it is half a voxel, below every MAT radius.
+/// \param voxel_size the edge length of a voxel of the grid (world units).
+/// \param resolution the resolution of that grid (`resolution` named parameter).
+/// \pre `voxel_size` >= 0 and `resolution` > 0.
+///
+/// \b Complexity: O(1).
+inline double default_smallest_radius(double voxel_size, int resolution)
+{
+  return voxel_size * double(resolution) / (2. * double(default_voxel_resolution));
+}
+
+/// \ingroup PkgGeodesicSkeletonRef
 /// Splits a (smoothed) curve skeleton into the joints and bones of an animation control
 /// skeleton, a rooted tree per connected component.
 ///
