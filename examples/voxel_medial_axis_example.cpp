@@ -4,7 +4,9 @@
 // voxel_medial_axis_example: the voxel stages one by one, as a user who wants the
 // intermediate products calls them: solid voxelization, distance transform (the MAT
 // radius), grassfire thinning, the paper's pruning (Algorithm 1), and the curve-skeleton
-// graph with the mesh vertices mapped to it.
+// graph with the mesh vertices mapped to it. On a grid finer than the default one, the end
+// points of the skeleton on the default grid guide the pruning, as in
+// extract_control_skeleton().
 //
 // Usage: voxel_medial_axis_example [MESH] [RESOLUTION]
 // Prints the size of each stage. Exits with 1 and a message on stderr on bad input.
@@ -14,6 +16,7 @@
 #include <CGAL/Geodesic_skeleton/Skeleton_radius_in_voxels_map.h>
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
+#include <CGAL/Geodesic_skeleton/coarse_skeleton_end_points.h>
 #include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/prune_skeleton.h>
@@ -28,11 +31,14 @@
 
 #include <boost/property_map/property_map.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <exception>
 #include <iostream>
+#include <optional>
 #include <string>
+#include <vector>
 
 #ifndef GEODESIC_SKELETON_EXAMPLE_MESH
 #define GEODESIC_SKELETON_EXAMPLE_MESH "data/meshes/cow.off"
@@ -81,14 +87,26 @@ int main(int argc, char* argv[])
     // 4. The loops that parts closer than a voxel made, which the mesh has no handle for.
     const std::size_t cut = GS::cut_spurious_cycles(skeleton, mesh);
 
-    // 5. The paper's pruning; twigs are snipped by the MAT radius (in voxels), or in a
-    //    thin sheet by its half width, and so are the branches inside the MAT balls of
-    //    the rest of the skeleton.
-    const GS::Pruning_report pruning = GS::prune_skeleton(
-        skeleton, GS::parameters::combine(GS::parameters::mat_radius_map(GS::mat_radius_in_voxels_map(distances)),
-                                          GS::parameters::sheet_radius_map(GS::sheet_radius_in_voxels_map(sheet_radii))));
+    // 5. On a grid finer than the default one, the end points of the skeleton that the same
+    //    stages give on the default grid, in this grid's coordinates: the rig's level of
+    //    detail, which pruning keeps whatever the resolution.
+    std::optional<std::vector<std::array<double, 3>>> coarse_ends;
+    if(resolution > GS::default_voxel_resolution)
+      coarse_ends = GS::coarse_skeleton_end_points(mesh, GS::default_voxel_resolution, solid.frame());
 
-    // 6. The curve skeleton graph: points in the mesh's coordinates, radii, mesh vertices.
+    // 6. The paper's pruning; twigs are snipped by the MAT radius (in voxels), or in a
+    //    thin sheet by its half width, and so are the branches inside the MAT balls of
+    //    the rest of the skeleton; with coarse end points, the end branches they do not have.
+    const GS::Pruning_report pruning = GS::prune_skeleton(
+        skeleton,
+        GS::parameters::combine(
+            GS::parameters::mat_radius_map(GS::mat_radius_in_voxels_map(distances)),
+            GS::parameters::sheet_radius_map(GS::sheet_radius_in_voxels_map(sheet_radii)),
+            GS::parameters::coarse_end_points(coarse_ends ? &*coarse_ends : nullptr),
+            GS::parameters::coarse_end_point_tolerance(
+                GS::default_coarse_end_point_tolerance(resolution, GS::default_voxel_resolution))));
+
+    // 7. The curve skeleton graph: points in the mesh's coordinates, radii, mesh vertices.
     GS::Curve_skeleton<Point, vertex_descriptor> curve;
     GS::to_graph(skeleton, distances, mesh, curve);
     const GS::Skeleton_statistics shape = GS::skeleton_statistics(curve);
@@ -104,6 +122,10 @@ int main(int argc, char* argv[])
               << " twig points removed\n"
               << "curve skeleton:      " << shape.points << " points, " << shape.end_points << " ends, "
               << shape.junctions << " junctions, " << shape.cycles << " cycles\n";
+    if(coarse_ends)
+      std::cout << "level of detail:     " << coarse_ends->size() << " end points at resolution "
+                << GS::default_voxel_resolution << ", " << pruning.snipped_beyond_coarse_detail
+                << " branches snipped beyond it, " << pruning.cut_back_branches << " cut back to it\n";
   }
   catch(const std::exception& e)
   {
