@@ -807,19 +807,25 @@ BOOST_AUTO_TEST_CASE(the_public_stages_composed_by_hand_give_the_same_skeleton)
       gs::voxelize(mesh, solid, gs::parameters::voxelized_surface_output(&surface));
       const auto with_surface = gs::parameters::voxelized_surface(&std::as_const(surface));
       const gs::Voxel_distance_field distances = gs::distance_transform(solid);
-      gs::Sheet_radii sheet_radii; // a thin sheet's half width, for the pruning
+      // A thin sheet's half width, for the pruning, read at each level of distance and across
+      // close levels (a thick plate slanted in the grid), for the pieces' level of detail.
+      gs::Sheet_radii sheet_radii, slanted_sheet_radii;
       gs::thin(solid, distances,
-               gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(sheet_radii)));
+               gs::parameters::combine(
+                   gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(sheet_radii)),
+                   gs::parameters::slanted_sheet_radius_map(
+                       boost::associative_property_map<gs::Sheet_radii>(slanted_sheet_radii))));
       gs::Sparse_voxel_set skeleton;
       skeleton.reset(solid.frame(), solid.bounding_box());
       solid.for_each([&](const gs::Voxel_key& k) { skeleton.insert(k); });
       gs::remove_small_pieces(skeleton, distances);
       const std::size_t cut = gs::cut_spurious_cycles(skeleton, mesh, with_surface);
       // The widest sheet of each piece, before pruning thins the sheets away.
-      const gs::Sheet_radii widest_sheet = gs::widest_sheet_radius_of_pieces(skeleton, sheet_radii);
+      const gs::Sheet_radii widest_sheet = gs::widest_sheet_radius_of_pieces(skeleton, slanted_sheet_radii);
       gs::prune_skeleton(skeleton,
                          gs::parameters::combine(gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(distances)),
-                                                 gs::parameters::sheet_radius_map(gs::sheet_radius_in_voxels_map(sheet_radii))));
+                                                 gs::parameters::sheet_radius_map(gs::sheet_radius_in_voxels_map(sheet_radii)),
+                                                 gs::parameters::piece_radius_map(gs::sheet_radius_in_voxels_map(widest_sheet))));
       Curve curve;
       gs::to_graph(skeleton, distances, mesh, curve, with_surface);
       gs::smooth_skeleton(curve);

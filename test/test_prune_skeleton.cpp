@@ -351,6 +351,47 @@ BOOST_AUTO_TEST_CASE(the_level_of_detail_is_relative_to_each_piece)
   BOOST_TEST(!skeleton.contains(big.bump_end));
 }
 
+// piece_radius_map: the unit of a piece's level of detail (limb_protrusion_factor) is at
+// least what the map gives, as extract_control_skeleton() gives the widest sheet of a piece
+// read across close levels. A trunk along x (radius 6, 40 voxels on each side of the
+// junction) and a limb along +y (20 voxels, radius 2), whose balls reach 16 voxels out of
+// the trunk's: it stays at the piece's own largest radius (0.75 x 6 = 4.5 voxels) and at 20
+// (15 voxels), and is snipped at 25 (18.75), the trunk's halves staying (40 voxels out).
+BOOST_AUTO_TEST_CASE(a_piece_radius_map_sets_the_level_of_detail_of_the_piece)
+{
+  using VoxelSet = gs::Sparse_voxel_set;
+  std::vector<Voxel_key> voxels;
+  std::unordered_map<Voxel_key, double, gs::Voxel_key_hash> radius;
+  for(int x = -40; x <= 40; ++x)
+  {
+    voxels.push_back(Voxel_key{x, 0, 0});
+    radius[voxels.back()] = 6.0;
+  }
+  for(int y = 1; y <= 20; ++y)
+  {
+    voxels.push_back(Voxel_key{0, y, 0});
+    radius[voxels.back()] = 2.0;
+  }
+  const Voxel_key limb_end{0, 20, 0};
+  const auto mat_radius = gs::parameters::mat_radius_map(boost::make_assoc_property_map(radius));
+  const auto pruned_with_piece_radius = [&](double piece_radius) {
+    VoxelSet skeleton = voxel_set<VoxelSet>(voxels);
+    gs::prune_skeleton(skeleton, gs::parameters::combine(gs::parameters::piece_radius_map(
+                                                             CGAL::Constant_property_map<Voxel_key, double>(piece_radius)),
+                                                         mat_radius));
+    return skeleton;
+  };
+  VoxelSet without_map = voxel_set<VoxelSet>(voxels);
+  gs::prune_skeleton(without_map, mat_radius);
+  BOOST_TEST(without_map.contains(limb_end));
+  BOOST_TEST((contents(pruned_with_piece_radius(0)) == contents(without_map)));
+  BOOST_TEST(pruned_with_piece_radius(20).contains(limb_end));
+  const VoxelSet wide = pruned_with_piece_radius(25);
+  BOOST_TEST(!wide.contains(limb_end));
+  BOOST_TEST(wide.contains(Voxel_key{-40, 0, 0}));
+  BOOST_TEST(wide.contains(Voxel_key{40, 0, 0}));
+}
+
 // A spine along x (radius 6) with parallel teeth along +y (radius 3, 23 voxels long), as
 // thinning leaves them in a thick sheet slanted in the grid. Each tooth reaches far out of
 // its junction's ball, but `spacing` 2 puts every tooth inside the balls of the next one.
@@ -735,6 +776,12 @@ BOOST_AUTO_TEST_CASE(absurd_parameters_give_clear_exceptions)
                     std::invalid_argument);
   BOOST_CHECK_THROW(gs::prune_skeleton(skeleton, gs::parameters::sheet_radius_map(
                                                      CGAL::Constant_property_map<Voxel_key, double>(std::nan("")))),
+                    std::invalid_argument);
+  BOOST_CHECK_THROW(gs::prune_skeleton(skeleton, gs::parameters::piece_radius_map(
+                                                     CGAL::Constant_property_map<Voxel_key, double>(-1.0))),
+                    std::invalid_argument);
+  BOOST_CHECK_THROW(gs::prune_skeleton(skeleton, gs::parameters::piece_radius_map(
+                                                     CGAL::Constant_property_map<Voxel_key, double>(HUGE_VAL))),
                     std::invalid_argument);
   // A sheet radius map that refers to no radii reads 0 everywhere: the MAT radius judges.
   BOOST_TEST(get(gs::Sheet_radius_in_voxels_map{}, Voxel_key{1, 2, 3}) == 0.);

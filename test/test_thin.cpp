@@ -12,6 +12,7 @@
 #include <boost/property_map/property_map.hpp>
 #include <boost/test/unit_test.hpp>
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <random>
@@ -414,6 +415,60 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(a_thicker_thin_sheet_burns_from_its_rim, VoxelSet,
       BOOST_TEST(middle == 20); // one voxel per column: one chain
     }
   }
+}
+
+// A plate 7 voxels thick, 30 wide, slanted in two directions of the grid (its normal 20
+// degrees off the z axis, turned 10 degrees about it), thinned with the default thin-part
+// radius: its middle lies on levels less than half a voxel apart, side by side in strips,
+// and each level's rounds measure a strip (at most 4 voxels here). The sheet radius read
+// across close levels (slanted_sheet_radius_map) measures the plate, its half width; it is
+// never below the one read at one level, and equals it in a sheet parallel to the grid.
+BOOST_AUTO_TEST_CASE_TEMPLATE(the_sheet_radius_across_close_levels_measures_a_slanted_plate, VoxelSet,
+                              Voxel_set_models)
+{
+  const double half_width = 15, thickness = 7;
+  const double turn = 10 * M_PI / 180, tilt = 20 * M_PI / 180;
+  const std::array<double, 3> normal{std::cos(turn) * std::sin(tilt), std::sin(turn) * std::sin(tilt), std::cos(tilt)};
+  const std::array<double, 3> across{-std::sin(turn), std::cos(turn), 0.};
+  const std::array<double, 3> along{normal[1] * across[2] - normal[2] * across[1],
+                                    normal[2] * across[0] - normal[0] * across[2],
+                                    normal[0] * across[1] - normal[1] * across[0]};
+  auto plate = [&](int x, int y, int z) {
+    auto dot = [&](const std::array<double, 3>& w) { return w[0] * x + w[1] * y + w[2] * z; };
+    return std::abs(dot(normal)) <= thickness / 2 && std::abs(dot(across)) <= half_width &&
+           std::abs(dot(along)) <= half_width;
+  };
+  const auto radii_of = [](VoxelSet set) {
+    const gs::Voxel_distance_field distances = gs::distance_transform(set);
+    std::pair<gs::Sheet_radii, gs::Sheet_radii> at_one_level_and_across;
+    gs::thin(set, distances,
+             gs::parameters::combine(gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(
+                                         at_one_level_and_across.first)),
+                                     gs::parameters::slanted_sheet_radius_map(
+                                         boost::associative_property_map<gs::Sheet_radii>(at_one_level_and_across.second))));
+    BOOST_TEST(at_one_level_and_across.first.size() == set.size());
+    BOOST_TEST(at_one_level_and_across.second.size() == set.size());
+    return at_one_level_and_across;
+  };
+  const auto largest = [](const gs::Sheet_radii& radii) {
+    double r = 0;
+    for(const auto& [k, radius] : radii)
+      r = (std::max)(r, radius);
+    return r;
+  };
+
+  const auto [at_one_level, across_levels] =
+      radii_of(voxels_where<VoxelSet>(gs::Voxel_box{gs::Voxel_key{-25, -25, -25}, gs::Voxel_key{26, 26, 26}}, plate));
+  BOOST_TEST(largest(at_one_level) <= 5.);
+  BOOST_TEST(largest(across_levels) >= half_width - 3);
+  BOOST_TEST(largest(across_levels) <= half_width + 2);
+  for(const auto& [k, radius] : at_one_level)
+    BOOST_TEST(across_levels.at(k) >= radius);
+
+  const auto [flat_at_one_level, flat_across_levels] = radii_of(voxels_where<VoxelSet>(
+      gs::Voxel_box{gs::Voxel_key{0, 0, 0}, gs::Voxel_key{40, 30, 7}}, [](int, int, int) { return true; }));
+  BOOST_TEST(largest(flat_at_one_level) >= half_width - 3);
+  BOOST_TEST((flat_at_one_level == flat_across_levels));
 }
 
 BOOST_AUTO_TEST_CASE(the_default_thin_part_radius_grows_above_the_default_resolution)

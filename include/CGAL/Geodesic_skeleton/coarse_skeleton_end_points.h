@@ -84,12 +84,13 @@ struct Coarse_skeleton_level_of_detail
 /// skeleton before pruning (the width that pruning judges the piece's twigs by), in the grid
 /// coordinates of `frame` (usually the finer grid's).
 ///
-/// The voxel stages run as `extract_control_skeleton()` runs them: `voxelize()`,
-/// `distance_transform()`, `thin()` (with the sheet radii and
-/// `default_thin_part_radius(resolution)`), `remove_small_pieces()`,
-/// `cut_spurious_cycles()`, then `widest_sheet_radius_of_pieces()` and `prune_skeleton()`
-/// (with the MAT and sheet radii), with the settings of `np` but the resolution. The points
-/// are voxel centres moved from the coarser grid's frame to `frame`.
+/// The voxel stages run as `extract_control_skeleton()` runs them on the grid of its level
+/// of detail: `voxelize()`, `distance_transform()`, `thin()` (with the sheet radii, read at
+/// one level and across close levels, and `default_thin_part_radius(resolution)`),
+/// `remove_small_pieces()`, `cut_spurious_cycles()`, then `widest_sheet_radius_of_pieces()`
+/// of the radii read across close levels and `prune_skeleton()` (with the MAT and sheet
+/// radii and those widest sheets as its `piece_radius_map`), with the settings of `np` but
+/// the resolution. The points are voxel centres moved from the coarser grid's frame to `frame`.
 ///
 /// \tparam FaceGraph a model of `FaceListGraph`, as for `voxelize()`.
 /// \param mesh the mesh.
@@ -125,10 +126,12 @@ coarse_skeleton_level_of_detail(const FaceGraph& mesh, int resolution, const Vox
     return std::nullopt;
   }
   const Voxel_distance_field distances = distance_transform(solid, coarse_np);
-  Sheet_radii sheet_radii;
+  Sheet_radii sheet_radii, slanted_sheet_radii;
   thin(solid, distances,
-       parameters::combine(parameters::sheet_radius_map(boost::associative_property_map<Sheet_radii>(sheet_radii)),
-                           coarse_np));
+       parameters::combine(
+           parameters::sheet_radius_map(boost::associative_property_map<Sheet_radii>(sheet_radii)),
+           parameters::slanted_sheet_radius_map(boost::associative_property_map<Sheet_radii>(slanted_sheet_radii)),
+           coarse_np));
   Sparse_voxel_set skeleton;
   skeleton.reset(solid.frame(), solid.bounding_box());
   solid.for_each([&](const Voxel_key& k) { skeleton.insert(k); });
@@ -137,7 +140,7 @@ coarse_skeleton_level_of_detail(const FaceGraph& mesh, int resolution, const Vox
 
   Coarse_skeleton_level_of_detail coarse;
   const auto in_frame = [&](const Voxel_key& k) { return frame.to_grid(solid.frame().centre(k)); };
-  const Sheet_radii widest = widest_sheet_radius_of_pieces(skeleton, sheet_radii);
+  const Sheet_radii widest = widest_sheet_radius_of_pieces(skeleton, slanted_sheet_radii);
   std::vector<std::pair<Voxel_key, double>> in_voxel_order(widest.begin(), widest.end());
   std::sort(in_voxel_order.begin(), in_voxel_order.end());
   for(const auto& [k, rounds] : in_voxel_order)
@@ -147,6 +150,7 @@ coarse_skeleton_level_of_detail(const FaceGraph& mesh, int resolution, const Vox
   }
   prune_skeleton(skeleton, parameters::combine(parameters::mat_radius_map(mat_radius_in_voxels_map(distances)),
                                                parameters::sheet_radius_map(sheet_radius_in_voxels_map(sheet_radii)),
+                                               parameters::piece_radius_map(sheet_radius_in_voxels_map(widest)),
                                                coarse_np));
   for(const Voxel_key& k : internal::graph_end_points(skeleton))
     coarse.end_points.push_back(in_frame(k));

@@ -189,6 +189,12 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 /// so that a sheet's chain is split in lengths of its width, and the widest sheet of each
 /// piece before pruning (`widest_sheet_radius_of_pieces()`, its `piece_radius_map`), so that
 /// a piece's level of detail is the one its pruning judged by, whichever chain the pruning kept.
+/// On the grid of the level of detail (at `level_of_detail_resolution` and coarser), that
+/// widest sheet is read across close levels (`thin()`'s `slanted_sheet_radius_map`), and
+/// pruning gets it too (its `piece_radius_map`): the middle of a thick plate slanted in the
+/// grid lies on several levels of distance, whose rounds each measure a strip of it, not the
+/// plate. A finer grid reads its own levels, and the split takes the larger of its width
+/// and the coarser grid's (below).
 ///
 /// Between `thin()` and `prune_skeleton()`, `remove_small_pieces()` removes the skeletons
 /// of the detached pieces whose solid is smaller than `small_piece_fraction` of the largest
@@ -383,10 +389,16 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   // thin at the default resolution are thin at any other.
   report.thin_part_radius = choose_parameter(get_parameter(np, internal_np::thin_part_radius_tag),
                                              default_thin_part_radius(report.resolution));
-  Sheet_radii sheet_radii;
+  report.level_of_detail_resolution = choose_parameter(get_parameter(np, internal_np::level_of_detail_resolution_tag),
+                                                       default_voxel_resolution);
+  const bool finer_than_level_of_detail =
+      report.level_of_detail_resolution > 0 && report.level_of_detail_resolution < report.resolution;
+  Sheet_radii sheet_radii, slanted_sheet_radii;
   thin(solid, distances,
-       parameters::combine(parameters::sheet_radius_map(boost::associative_property_map<Sheet_radii>(sheet_radii)),
-                           parameters::thin_part_radius(report.thin_part_radius), np));
+       parameters::combine(
+           parameters::sheet_radius_map(boost::associative_property_map<Sheet_radii>(sheet_radii)),
+           parameters::slanted_sheet_radius_map(boost::associative_property_map<Sheet_radii>(slanted_sheet_radii)),
+           parameters::thin_part_radius(report.thin_part_radius), np));
   Sparse_voxel_set skeleton;
   skeleton.reset(solid.frame(), solid.bounding_box());
   solid.for_each([&](const Voxel_key& k) { skeleton.insert(k); });
@@ -408,15 +420,16 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
 
   report.spurious_cycles_cut = cut_spurious_cycles(skeleton, mesh, with_surface);
   clock.finished("cut_spurious_cycles");
-  // Pruning judges a piece's twigs by its widest sheet, and may keep a chain beside it.
-  const Sheet_radii widest_sheet_of_piece = widest_sheet_radius_of_pieces(skeleton, sheet_radii);
+  // Pruning judges a piece's twigs by its widest sheet, and may keep a chain beside it. On
+  // the grid of the level of detail, the widest sheet is read across close levels, which
+  // measures a thick slanted plate; a finer grid gets it from that grid (`coarse` below).
+  const Sheet_radii widest_sheet_of_piece =
+      widest_sheet_radius_of_pieces(skeleton, finer_than_level_of_detail ? sheet_radii : slanted_sheet_radii);
 
   // The end branches that a finer grid resolves beyond the level of detail of the default
   // one are snipped as long as the skeleton has more end points than it has there.
-  report.level_of_detail_resolution = choose_parameter(get_parameter(np, internal_np::level_of_detail_resolution_tag),
-                                                       default_voxel_resolution);
   std::optional<Coarse_skeleton_level_of_detail> coarse;
-  if(report.level_of_detail_resolution > 0 && report.level_of_detail_resolution < report.resolution)
+  if(finer_than_level_of_detail)
     coarse = coarse_skeleton_level_of_detail(mesh, report.level_of_detail_resolution, solid.frame(), np);
   clock.finished("level_of_detail");
 
@@ -425,6 +438,7 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
       parameters::combine(
           parameters::mat_radius_map(mat_radius_in_voxels_map(distances)),
           parameters::sheet_radius_map(sheet_radius_in_voxels_map(sheet_radii)),
+          parameters::piece_radius_map(sheet_radius_in_voxels_map(widest_sheet_of_piece)),
           parameters::coarse_end_points(coarse ? &std::as_const(coarse->end_points) : nullptr),
           parameters::coarse_end_point_tolerance(
               coarse ? default_coarse_end_point_tolerance(report.resolution, report.level_of_detail_resolution)

@@ -146,6 +146,18 @@ struct Pruning_report
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{0.75}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{piece_radius_map}
+///     \cgalParamDescription{at each skeleton voxel, a radius of its piece measured
+///                           otherwise, in voxels: the largest radius of a piece, the unit of
+///                           `limb_protrusion_factor`, is at least the largest value of this
+///                           map over the piece (`extract_control_skeleton()` gives, on the
+///                           grid of its level of detail, the widest sheet of each piece read
+///                           across close levels: `widest_sheet_radius_of_pieces()` of
+///                           `thin()`'s `slanted_sheet_radius_map`) (package parameter)}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `Voxel_key` as key type and a
+///                    number as value type}
+///     \cgalParamDefault{0 everywhere: the largest MAT or sheet radius of the piece}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{coarse_end_points}
 ///     \cgalParamDescription{the end points of the pruned skeleton of the same shape on a
 ///                           coarser grid (the vertices of degree 1 of its graph), in the grid
@@ -170,7 +182,8 @@ struct Pruning_report
 ///
 /// \returns what was removed, and how many rounds of snipping were made.
 /// \throws std::invalid_argument when `spur_length_factor`, `limb_protrusion_factor` or
-///         `coarse_end_point_tolerance` is out of range, a coarse end point is not finite, or a radius or sheet radius is negative or not finite.
+///         `coarse_end_point_tolerance` is out of range, a coarse end point is not finite, or a radius, sheet radius or piece radius is negative or
+///         not finite.
 ///
 /// \b Complexity: O(N log N + V M) for N skeleton voxels per round of snipping (one Dijkstra
 /// per region, over the region; each end branch traced once), where the protrusions of the
@@ -230,13 +243,19 @@ Pruning_report prune_skeleton(VoxelSet& skeleton,
   auto radius = [&](const Voxel_key& k) {
     return (std::max)(mat_radius(k), checked(static_cast<double>(get(sheet_radius_map, k)), "sheet radius map"));
   };
+  const auto piece_radius_map = choose_parameter(get_parameter(np, internal_np::piece_radius_map_tag),
+                                                 CGAL::Constant_property_map<Voxel_key, double>(0.0));
+  // The unit of a piece's level of detail: its largest radius, or what the map gives.
+  auto piece_radius = [&](const Voxel_key& k) {
+    return (std::max)(radius(k), checked(static_cast<double>(get(piece_radius_map, k)), "piece radius map"));
+  };
   const auto radii = internal::snipping_radii(radius, mat_radius);
   // Snipping a twig can leave a small cluster of branched points where it hung, and
   // Algorithm 1 can turn a junction into a plain end branch: alternate the two until
   // neither changes anything.
   internal::Spur_thresholds thresholds{factor, protrusion_factor, {}};
   if(protrusion_factor > 0)
-    thresholds.largest_radius_of_piece = internal::largest_radius_of_pieces(skeleton, radius);
+    thresholds.largest_radius_of_piece = internal::largest_radius_of_pieces(skeleton, piece_radius);
   // With a coarser skeleton, the branches snipped are kept for swapping back in.
   std::vector<internal::End_branch> snipped_for_swaps;
   if(coarse_points != nullptr)

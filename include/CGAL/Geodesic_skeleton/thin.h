@@ -29,6 +29,13 @@ namespace CGAL {
 namespace Geodesic_skeleton {
 
 /// \ingroup PkgGeodesicSkeletonRef
+/// How far apart, in voxels, two levels of distance to the outside may be for `thin()`'s
+/// `slanted_sheet_radius_map` to read their rounds together: half a voxel. The middle of
+/// a slanted plate about eight voxels thick (anchor.off's at the default resolution) lies
+/// on levels 3.61, 3.74, 4.00 and 4.12 voxels deep, each next to one within the band.
+inline constexpr double slanted_sheet_depth_band = 0.5;
+
+/// \ingroup PkgGeodesicSkeletonRef
 /// The `thin_part_radius` that `extract_control_skeleton()` gives `thin()`: sqrt(2) voxels
 /// (a part about two voxels thick) at the default resolution (`default_voxel_resolution`)
 /// and below, and in proportion to the resolution above it, so that a part counts as thin
@@ -108,6 +115,24 @@ inline double default_thin_part_radius(int resolution)
 ///                    `double`, such as `boost::associative_property_map<Sheet_radii>`}
 ///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{slanted_sheet_radius_map}
+///     \cgalParamDescription{receives, for every voxel that the thinning keeps, its sheet
+///                           radius read across close levels: the latest round in which a
+///                           26-neighbour was deleted whose distance to the outside is within
+///                           `slanted_sheet_depth_band` (half a voxel) of the voxel's, in
+///                           voxels. The middle of a thick sheet slanted in the grid (a
+///                           plate a few voxels thick) falls on several levels of distance
+///                           less than half a voxel apart, side by side in strips, and each
+///                           level burns its own strips: the `sheet_radius_map` measures a
+///                           strip there, this reading the sheet. `extract_control_skeleton()`
+///                           reads a piece's widest sheet from it on the grid of its level of
+///                           detail (`widest_sheet_radius_of_pieces()`); on a finer grid the
+///                           levels are denser and the band reaches across a thick block's
+///                           flat levels, so there it keeps the `sheet_radius_map`.}
+///     \cgalParamType{a model of `WritablePropertyMap` with key `Voxel_key` and value
+///                    `double`, such as `boost::associative_property_map<Sheet_radii>`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \returns the number of voxels erased.
@@ -117,7 +142,8 @@ inline double default_thin_part_radius(int resolution)
 ///
 /// \b Complexity: O(B + N) time and memory for B voxels in the set's bounding box and N in
 ///    the set (each deletion re-queues at most 26 neighbours; the distances are sorted by
-///    counting), plus one write to the `sheet_radius_map` per voxel kept.
+///    counting), plus one write to the `sheet_radius_map` and one to the
+///    `slanted_sheet_radius_map` per voxel kept.
 template <typename VoxelSet, typename VoxelDistanceField,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 std::size_t thin(VoxelSet& voxels, const VoxelDistanceField& distances,
@@ -131,8 +157,11 @@ std::size_t thin(VoxelSet& voxels, const VoxelDistanceField& distances,
       caller);
   const Voxel_box box = internal::require_nonempty_box(voxels, 2, caller);
   const internal::Grid_layout layout(box);
-  constexpr bool records_sheet_radii =
+  constexpr bool writes_sheet_radii =
       !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::sheet_radius_map_t>::value;
+  constexpr bool writes_slanted_sheet_radii =
+      !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::slanted_sheet_radius_map_t>::value;
+  constexpr bool records_sheet_radii = writes_sheet_radii || writes_slanted_sheet_radii;
   const double bytes_per_box_voxel = records_sheet_radii ? 7. : 5.; // + the 16-bit rounds of sheet_radius()
   // Per voxel of the set, at most: its place in the order, a round's queue and candidates
   // (4 bytes each), and the work lists of the parallel deletions (16).
@@ -151,10 +180,17 @@ std::size_t thin(VoxelSet& voxels, const VoxelDistanceField& distances,
     if(fire.deleted(i))
       voxels.erase(k);
   });
-  if constexpr(records_sheet_radii)
+  if constexpr(writes_sheet_radii)
   {
     auto sheet_radii = CGAL::parameters::get_parameter(np, internal_np::sheet_radius_map_tag);
     voxels.for_each([&](const Voxel_key& k) { put(sheet_radii, k, fire.sheet_radius(layout.index(k))); });
+  }
+  if constexpr(writes_slanted_sheet_radii)
+  {
+    auto slanted_sheet_radii = CGAL::parameters::get_parameter(np, internal_np::slanted_sheet_radius_map_tag);
+    voxels.for_each([&](const Voxel_key& k) {
+      put(slanted_sheet_radii, k, fire.sheet_radius(layout.index(k), slanted_sheet_depth_band));
+    });
   }
   return removed;
 }

@@ -73,3 +73,6 @@ CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(max_bones_per_vertex)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(falloff)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(influence_ratio)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(bone_segmentation_map)
+
+// thin (output, appended); prune_skeleton reads piece_radius_map too
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(slanted_sheet_radius_map)

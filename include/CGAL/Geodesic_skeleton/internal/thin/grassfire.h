@@ -299,15 +299,20 @@ public:
   // measured in the sheet (its half width, where i is on the sheet's middle line), which the
   // MAT radius (the half thickness) does not tell. Elsewhere a level is a shell that burns
   // in a round or two, and this is 0 or about 1. Needs the rounds recorded (constructor).
-  double sheet_radius(std::size_t i) const
+  //
+  // With a `depth_band`, the rounds of the neighbours at a distance within `depth_band`
+  // voxels of i's count too: the middle of a thick sheet slanted in the grid falls on
+  // levels less than half a voxel apart, side by side in strips, and each level's rounds
+  // measure its own strips only.
+  double sheet_radius(std::size_t i, double depth_band = 0) const
   {
     CGAL_precondition(!m_round_deleted.empty());
     std::uint16_t latest = 0;
-    const std::uint32_t level_of_i = burning_level(i);
+    const double depth_of_i = std::sqrt(double(burning_level(i)));
     for(int b = 0; b < 26; ++b)
     {
       const std::size_t j = std::size_t(std::ptrdiff_t(i) + m_offsets[b]);
-      if((m_state[j] & DELETED) && burning_level(j) == level_of_i)
+      if((m_state[j] & DELETED) && std::abs(std::sqrt(double(burning_level(j))) - depth_of_i) <= depth_band)
         latest = (std::max)(latest, m_round_deleted[j]);
     }
     return double(latest);
