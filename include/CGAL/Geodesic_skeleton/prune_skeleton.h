@@ -182,8 +182,8 @@ struct Pruning_report
 ///
 /// \returns what was removed, and how many rounds of snipping were made.
 /// \throws std::invalid_argument when `spur_length_factor`, `limb_protrusion_factor` or
-///         `coarse_end_point_tolerance` is out of range, a coarse end point is not finite, or a radius, sheet radius or piece radius is negative or
-///         not finite.
+///         `coarse_end_point_tolerance` is out of range, a coarse end point is not finite, or
+///         a radius, sheet radius or piece radius is negative or not finite.
 ///
 /// \b Complexity: O(N log N + V M) for N skeleton voxels per round of snipping (one Dijkstra
 /// per region, over the region; each end branch traced once), where the protrusions of the
