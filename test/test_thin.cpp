@@ -507,7 +507,8 @@ BOOST_AUTO_TEST_CASE(both_models_give_the_same_skeleton)
 }
 
 // The round numbers behind the sheet radii take 2 bytes per voxel of the box: only a call
-// that asks for the radii pays them (5 bytes per box voxel without, 7 with, plus 12 per voxel).
+// that asks for the radii (either reading) pays them (5 bytes per box voxel without, 7
+// with, plus 12 per voxel).
 BOOST_AUTO_TEST_CASE(the_sheet_radii_cost_memory_only_when_asked_for)
 {
   const gs::Voxel_box box{gs::Voxel_key{0, -7, -7}, gs::Voxel_key{40, 8, 8}};
@@ -529,6 +530,12 @@ BOOST_AUTO_TEST_CASE(the_sheet_radii_cost_memory_only_when_asked_for)
   BOOST_CHECK_THROW(gs::thin(with_radii, distances,
                              gs::parameters::combine(gs::parameters::memory_limit(between),
                                                      gs::parameters::sheet_radius_map(
+                                                         boost::associative_property_map<gs::Sheet_radii>(radii)))),
+                    std::length_error);
+  gs::Sparse_voxel_set with_slanted_radii = bar;
+  BOOST_CHECK_THROW(gs::thin(with_slanted_radii, distances,
+                             gs::parameters::combine(gs::parameters::memory_limit(between),
+                                                     gs::parameters::slanted_sheet_radius_map(
                                                          boost::associative_property_map<gs::Sheet_radii>(radii)))),
                     std::length_error);
 }

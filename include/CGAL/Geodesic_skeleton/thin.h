@@ -83,7 +83,8 @@ inline double default_thin_part_radius(int resolution)
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{`default_voxel_memory_limit`, 2 GiB}
 ///     \cgalParamExtra{The need, about 5 bytes per voxel of the set's bounding box (grown
-///                     by two voxels; 7 with a `sheet_radius_map`) plus at most 28 per
+///                     by two voxels; 7 with a `sheet_radius_map` or a
+///                     `slanted_sheet_radius_map`) plus at most 28 per
 ///                     voxel of the set, is checked before allocating.}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{thin_part_radius}
