@@ -809,13 +809,7 @@ BOOST_AUTO_TEST_CASE(a_slanted_plate_is_judged_by_its_width_read_across_close_le
            gs::parameters::combine(
                gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(at_one_level)),
                gs::parameters::slanted_sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(across_levels))));
-  const auto widest = [](const gs::Sheet_radii& radii) {
-    double r = 0;
-    for(const auto& [k, radius] : radii)
-      r = (std::max)(r, radius);
-    return r;
-  };
-  BOOST_TEST(widest(across_levels) > widest(at_one_level));
+  BOOST_TEST(test::largest_sheet_radius(across_levels) > test::largest_sheet_radius(at_one_level));
 
   check_joints_at_128_within_a_quarter_of_those_at_64(mesh);
 }

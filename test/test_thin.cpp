@@ -450,24 +450,18 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(the_sheet_radius_across_close_levels_measures_a_sl
     BOOST_TEST(at_one_level_and_across.second.size() == set.size());
     return at_one_level_and_across;
   };
-  const auto largest = [](const gs::Sheet_radii& radii) {
-    double r = 0;
-    for(const auto& [k, radius] : radii)
-      r = (std::max)(r, radius);
-    return r;
-  };
 
   const auto [at_one_level, across_levels] =
       radii_of(voxels_where<VoxelSet>(gs::Voxel_box{gs::Voxel_key{-25, -25, -25}, gs::Voxel_key{26, 26, 26}}, plate));
-  BOOST_TEST(largest(at_one_level) <= 5.);
-  BOOST_TEST(largest(across_levels) >= half_width - 3);
-  BOOST_TEST(largest(across_levels) <= half_width + 2);
+  BOOST_TEST(test::largest_sheet_radius(at_one_level) <= 5.);
+  BOOST_TEST(test::largest_sheet_radius(across_levels) >= half_width - 3);
+  BOOST_TEST(test::largest_sheet_radius(across_levels) <= half_width + 2);
   for(const auto& [k, radius] : at_one_level)
     BOOST_TEST(across_levels.at(k) >= radius);
 
   const auto [flat_at_one_level, flat_across_levels] = radii_of(voxels_where<VoxelSet>(
       gs::Voxel_box{gs::Voxel_key{0, 0, 0}, gs::Voxel_key{40, 30, 7}}, [](int, int, int) { return true; }));
-  BOOST_TEST(largest(flat_at_one_level) >= half_width - 3);
+  BOOST_TEST(test::largest_sheet_radius(flat_at_one_level) >= half_width - 3);
   BOOST_TEST((flat_at_one_level == flat_across_levels));
 }
 

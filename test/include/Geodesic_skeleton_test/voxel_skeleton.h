@@ -5,6 +5,7 @@
 #define GEODESIC_SKELETON_TEST_VOXEL_SKELETON_H
 
 #include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
+#include <CGAL/Geodesic_skeleton/Skeleton_radius_in_voxels_map.h>
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/thin.h>
@@ -17,6 +18,7 @@
 
 #include <boost/graph/connected_components.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -29,6 +31,15 @@
 namespace Geodesic_skeleton_test {
 
 namespace gs = CGAL::Geodesic_skeleton;
+
+// The largest of the sheet radii that thin() recorded, 0 when there are none.
+inline double largest_sheet_radius(const gs::Sheet_radii& radii)
+{
+  double largest = 0;
+  for(const auto& [k, radius] : radii)
+    largest = (std::max)(largest, radius);
+  return largest;
+}
 
 // The keys of a voxel set, ordered.
 template <typename VoxelSet>
