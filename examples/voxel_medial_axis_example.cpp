@@ -4,9 +4,9 @@
 // voxel_medial_axis_example: the voxel stages one by one, as a user who wants the
 // intermediate products calls them: solid voxelization, distance transform (the MAT
 // radius), grassfire thinning, the paper's pruning (Algorithm 1), and the curve-skeleton
-// graph with the mesh vertices mapped to it. On a grid finer than the default one, the end
-// points of the skeleton on the default grid guide the pruning, as in
-// extract_control_skeleton().
+// graph with the mesh vertices mapped to it. Pruning judges each piece's twigs against its
+// widest sheet, and on a grid finer than the default one, the end points of the skeleton on
+// the default grid guide it, as in extract_control_skeleton().
 //
 // Usage: voxel_medial_axis_example [MESH] [RESOLUTION]
 // Prints the size of each stage. Exits with 1 and a message on stderr on bad input.
@@ -20,6 +20,7 @@
 #include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/prune_skeleton.h>
+#include <CGAL/Geodesic_skeleton/sheet_half_widths.h>
 #include <CGAL/Geodesic_skeleton/skeleton_statistics.h>
 #include <CGAL/Geodesic_skeleton/thin.h>
 #include <CGAL/Geodesic_skeleton/to_graph.h>
@@ -72,12 +73,15 @@ int main(int argc, char* argv[])
     const GS::Voxel_distance_field distances = GS::distance_transform(solid);
 
     // 3. The grassfire: a one-voxel-thick curve skeleton with the solid's topology, and
-    //    the sheet radius of its voxels (the half width of a thin sheet, measured in it).
+    //    the sheet radius of its voxels (the half width of a thin sheet, measured in it),
+    //    read at one level of distance and across close levels (a thick slanted plate).
     //    The parts thin at the default resolution are thin at this one too.
-    GS::Sheet_radii sheet_radii;
+    GS::Sheet_radii sheet_radii, slanted_sheet_radii;
     GS::thin(solid, distances,
              GS::parameters::combine(
                  GS::parameters::sheet_radius_map(boost::associative_property_map<GS::Sheet_radii>(sheet_radii)),
+                 GS::parameters::slanted_sheet_radius_map(
+                     boost::associative_property_map<GS::Sheet_radii>(slanted_sheet_radii)),
                  GS::parameters::thin_part_radius(GS::default_thin_part_radius(resolution))));
     GS::Sparse_voxel_set skeleton;
     skeleton.reset(solid.frame(), solid.bounding_box());
@@ -90,9 +94,15 @@ int main(int argc, char* argv[])
     // 5. On a grid finer than the default one, the end points of the skeleton that the same
     //    stages give on the default grid, in this grid's coordinates: the rig's level of
     //    detail, which pruning keeps whatever the resolution.
+    const bool finer_than_default = resolution > GS::default_voxel_resolution;
     std::optional<std::vector<std::array<double, 3>>> coarse_ends;
-    if(resolution > GS::default_voxel_resolution)
+    if(finer_than_default)
       coarse_ends = GS::coarse_skeleton_end_points(mesh, GS::default_voxel_resolution, solid.frame());
+    //    Each piece's twigs are judged against its widest sheet, read across close levels on
+    //    the default grid and coarser; on a finer grid that reading reaches across the levels
+    //    of a thick block, and the sheet is read at one level, as extract_control_skeleton() does.
+    const GS::Sheet_radii widest_sheet =
+        GS::widest_sheet_radius_of_pieces(skeleton, finer_than_default ? sheet_radii : slanted_sheet_radii);
 
     // 6. The paper's pruning; twigs are snipped by the MAT radius (in voxels), or in a
     //    thin sheet by its half width, and so are the branches inside the MAT balls of
@@ -102,6 +112,7 @@ int main(int argc, char* argv[])
         GS::parameters::combine(
             GS::parameters::mat_radius_map(GS::mat_radius_in_voxels_map(distances)),
             GS::parameters::sheet_radius_map(GS::sheet_radius_in_voxels_map(sheet_radii)),
+            GS::parameters::piece_radius_map(GS::sheet_radius_in_voxels_map(widest_sheet)),
             GS::parameters::coarse_end_points(coarse_ends ? &*coarse_ends : nullptr),
             GS::parameters::coarse_end_point_tolerance(
                 GS::default_coarse_end_point_tolerance(resolution, GS::default_voxel_resolution))));
