@@ -113,6 +113,13 @@ Pruning_counts pruning_counts(const Mesh& mesh, int resolution)
   Pruning_counts c;
   gs::Dense_voxel_grid solid;
   gs::voxelize(mesh, solid, gs::parameters::resolution(resolution));
+  // Above the level of detail's resolution, the skeleton there: the pieces its solid joins,
+  // and its end points.
+  std::optional<gs::Coarse_skeleton_level_of_detail> coarse;
+  if(resolution > gs::default_voxel_resolution)
+    coarse = gs::coarse_skeleton_level_of_detail(mesh, gs::default_voxel_resolution, solid.frame());
+  if(coarse)
+    gs::join_pieces_joined_on_coarser_grid(solid, coarse->solid);
   const gs::Voxel_distance_field distances = gs::distance_transform(solid);
   gs::Sheet_radii sheet_radii;
   gs::thin(solid, distances,
@@ -139,13 +146,9 @@ Pruning_counts pruning_counts(const Mesh& mesh, int resolution)
   c.regions = report_1.branched_regions;
   c.algorithm_1_branched = gs::count_skeleton_points(algorithm_1).branched_connection;
 
-  // Above the level of detail's resolution, the end points of the skeleton there.
-  std::optional<std::vector<std::array<double, 3>>> coarse_ends;
-  if(resolution > gs::default_voxel_resolution)
-    coarse_ends = gs::coarse_skeleton_end_points(mesh, gs::default_voxel_resolution, solid.frame());
   c.pruning = gs::prune_skeleton(
       skeleton, gs::parameters::combine(
-                    radius, gs::parameters::coarse_end_points(coarse_ends ? &std::as_const(*coarse_ends) : nullptr),
+                    radius, gs::parameters::coarse_end_points(coarse ? &std::as_const(coarse->end_points) : nullptr),
                     gs::parameters::coarse_end_point_tolerance(
                         gs::default_coarse_end_point_tolerance(resolution, gs::default_voxel_resolution))));
   c.branched_after = gs::count_skeleton_points(skeleton).branched_connection;
@@ -192,9 +195,9 @@ int main(int argc, char* argv[])
   reeb_table << std::fixed << std::setprecision(2);
   bool all_agree = true;
   // Where our time goes: the median over the timed runs of each stage's time.
-  const std::vector<std::string> stages = {"voxelize", "distance_transform", "thin", "thinned_graph",
-                                           "remove_small_pieces", "cut_spurious_cycles", "level_of_detail", "prune", "to_graph",
-                                           "smooth", "curve_points_inside", "split_into_bones"};
+  const std::vector<std::string> stages = {"voxelize", "level_of_detail", "join_pieces", "distance_transform", "thin",
+                                           "thinned_graph", "remove_small_pieces", "cut_spurious_cycles", "prune",
+                                           "to_graph", "smooth", "curve_points_inside", "split_into_bones"};
   std::ostringstream stage_table;
   stage_table << "\n| mesh |";
   for(const std::string& stage : stages)

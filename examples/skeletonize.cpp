@@ -573,6 +573,7 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
       timings["skinning_weights"] = skinning.report.milliseconds;
     nlohmann::json stages = {
         {"solid", {{"voxels", report.solid_voxels}, {"pieces", report.small_pieces.pieces},
+                   {"pieces_joined", report.pieces_joined},
                    {"small_pieces_removed", report.small_pieces.removed_pieces}}},
         {"thinned", stage_json(report.thinned)},
         {"spurious_cycles", {{"cut", report.spurious_cycles_cut}}},

@@ -19,6 +19,7 @@
 #include <CGAL/Geodesic_skeleton/coarse_skeleton_end_points.h>
 #include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
+#include <CGAL/Geodesic_skeleton/join_pieces_joined_on_coarser_grid.h>
 #include <CGAL/Geodesic_skeleton/prune_skeleton.h>
 #include <CGAL/Geodesic_skeleton/sheet_half_widths.h>
 #include <CGAL/Geodesic_skeleton/skeleton_statistics.h>
@@ -32,7 +33,6 @@
 
 #include <boost/property_map/property_map.hpp>
 
-#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <exception>
@@ -69,6 +69,17 @@ int main(int argc, char* argv[])
     GS::Dense_voxel_grid solid;
     GS::voxelize(mesh, solid, GS::parameters::resolution(resolution));
 
+    //    On a grid finer than the default one, the skeleton that the same stages give on the
+    //    default grid, in this grid's coordinates: the rig's level of detail, which the
+    //    stages below keep whatever the resolution. The pieces that its solid joins (parts
+    //    within about a voxel of that grid of each other) are joined on this grid too.
+    const bool finer_than_default = resolution > GS::default_voxel_resolution;
+    std::optional<GS::Coarse_skeleton_level_of_detail> coarse;
+    if(finer_than_default)
+      coarse = GS::coarse_skeleton_level_of_detail(mesh, GS::default_voxel_resolution, solid.frame());
+    if(coarse)
+      GS::join_pieces_joined_on_coarser_grid(solid, coarse->solid);
+
     // 2. The squared distance of every voxel to the outside: the MAT radius function.
     const GS::Voxel_distance_field distances = GS::distance_transform(solid);
 
@@ -91,14 +102,7 @@ int main(int argc, char* argv[])
     // 4. The loops that parts closer than a voxel made, which the mesh has no handle for.
     const std::size_t cut = GS::cut_spurious_cycles(skeleton, mesh);
 
-    // 5. On a grid finer than the default one, the end points of the skeleton that the same
-    //    stages give on the default grid, in this grid's coordinates: the rig's level of
-    //    detail, which pruning keeps whatever the resolution.
-    const bool finer_than_default = resolution > GS::default_voxel_resolution;
-    std::optional<std::vector<std::array<double, 3>>> coarse_ends;
-    if(finer_than_default)
-      coarse_ends = GS::coarse_skeleton_end_points(mesh, GS::default_voxel_resolution, solid.frame());
-    //    Each piece's twigs are judged against its widest sheet, read across close levels on
+    // 5. Each piece's twigs are judged against its widest sheet, read across close levels on
     //    the default grid and coarser; on a finer grid that reading reaches across the levels
     //    of a thick block, and the sheet is read at one level, as extract_control_skeleton() does.
     const GS::Sheet_radii widest_sheet =
@@ -113,7 +117,7 @@ int main(int argc, char* argv[])
             GS::parameters::mat_radius_map(GS::mat_radius_in_voxels_map(distances)),
             GS::parameters::sheet_radius_map(GS::sheet_radius_in_voxels_map(sheet_radii)),
             GS::parameters::piece_radius_map(GS::sheet_radius_in_voxels_map(widest_sheet)),
-            GS::parameters::coarse_end_points(coarse_ends ? &*coarse_ends : nullptr),
+            GS::parameters::coarse_end_points(coarse ? &coarse->end_points : nullptr),
             GS::parameters::coarse_end_point_tolerance(
                 GS::default_coarse_end_point_tolerance(resolution, GS::default_voxel_resolution))));
 
@@ -133,8 +137,8 @@ int main(int argc, char* argv[])
               << " twig points removed\n"
               << "curve skeleton:      " << shape.points << " points, " << shape.end_points << " ends, "
               << shape.junctions << " junctions, " << shape.cycles << " cycles\n";
-    if(coarse_ends)
-      std::cout << "level of detail:     " << coarse_ends->size() << " end points at resolution "
+    if(coarse)
+      std::cout << "level of detail:     " << coarse->end_points.size() << " end points at resolution "
                 << GS::default_voxel_resolution << ", " << pruning.snipped_beyond_coarse_detail
                 << " branches snipped beyond it, " << pruning.cut_back_branches << " cut back to it\n";
   }

@@ -479,6 +479,28 @@ BOOST_AUTO_TEST_CASE(two_separate_bodies_give_two_trees)
   BOOST_TEST(e.report.pruned.components == 2u);
 }
 
+// blobby_3cc.off is three open pieces. At 64 two of them come within a voxel of each other
+// and the solid joins them: two trees. At 128 the gap is two voxels, and without the join
+// the rig had three trees, its topology set by the resolution.
+BOOST_AUTO_TEST_CASE(pieces_the_default_grid_joins_are_one_tree_at_any_resolution)
+{
+  const Mesh mesh = test::demo_mesh<Mesh>("blobby_3cc.off");
+  Control at_64, at_128, at_128_alone;
+  const gs::Control_skeleton_report r_64 = gs::extract_control_skeleton(mesh, at_64);
+  const gs::Control_skeleton_report r_128 =
+      gs::extract_control_skeleton(mesh, at_128, gs::parameters::resolution(128));
+  const gs::Control_skeleton_report r_alone = gs::extract_control_skeleton(
+      mesh, at_128_alone,
+      gs::parameters::combine(gs::parameters::resolution(128), gs::parameters::level_of_detail_resolution(0)));
+  BOOST_TEST(r_64.pieces_joined == 0u);
+  BOOST_TEST(r_64.pruned.components == 2u);
+  BOOST_TEST(r_128.pieces_joined == 1u);
+  BOOST_TEST(r_128.pruned.components == r_64.pruned.components);
+  BOOST_TEST(at_128[boost::graph_bundle].roots.size() == at_64[boost::graph_bundle].roots.size());
+  BOOST_TEST(r_alone.pieces_joined == 0u);
+  BOOST_TEST(r_alone.pruned.components == 3u);
+}
+
 BOOST_AUTO_TEST_CASE(a_moved_mesh_gives_the_moved_control_skeleton)
 {
   const Mesh cow = test::demo_mesh<Mesh>("cow.off");
@@ -664,8 +686,9 @@ BOOST_AUTO_TEST_CASE(the_report_and_the_visitor_see_every_stage)
     void stage_finished(const std::string& stage, double) { stages->push_back(stage); }
   };
   const std::vector<std::string> documented = {
-      "voxelize", "distance_transform", "thin",   "thinned_graph",       "remove_small_pieces", "cut_spurious_cycles",
-      "level_of_detail", "prune", "to_graph", "smooth", "curve_points_inside", "split_into_bones", "reeb_graph"};
+      "voxelize", "level_of_detail", "join_pieces", "distance_transform", "thin", "thinned_graph",
+      "remove_small_pieces", "cut_spurious_cycles", "prune", "to_graph", "smooth", "curve_points_inside",
+      "split_into_bones", "reeb_graph"};
   std::vector<std::string> stages;
   Curve curve;
   gs::Reeb_graph<Mesh> reeb;
@@ -899,6 +922,13 @@ BOOST_AUTO_TEST_CASE(the_stages_composed_by_hand_on_a_finer_grid_give_the_same_s
   gs::voxelize(mesh, solid, gs::parameters::combine(gs::parameters::resolution(resolution),
                                                     gs::parameters::voxelized_surface_output(&surface)));
   const auto with_surface = gs::parameters::voxelized_surface(&std::as_const(surface));
+  // The skeleton at the coarser resolution, in this grid's coordinates: the pieces its solid
+  // joins are joined here too, its end points bound the end points that pruning keeps, and
+  // its pieces' widest sheets the level of detail.
+  const std::optional<gs::Coarse_skeleton_level_of_detail> coarse =
+      gs::coarse_skeleton_level_of_detail(mesh, coarse_resolution, solid.frame());
+  if(coarse)
+    gs::join_pieces_joined_on_coarser_grid(solid, coarse->solid);
   const gs::Voxel_distance_field distances = gs::distance_transform(solid);
   gs::Sheet_radii sheet_radii;
   gs::thin(solid, distances,
@@ -910,10 +940,6 @@ BOOST_AUTO_TEST_CASE(the_stages_composed_by_hand_on_a_finer_grid_give_the_same_s
   gs::remove_small_pieces(skeleton, distances);
   gs::cut_spurious_cycles(skeleton, mesh, with_surface);
   const gs::Sheet_radii widest_sheet = gs::widest_sheet_radius_of_pieces(skeleton, sheet_radii);
-  // The skeleton at the coarser resolution, in this grid's coordinates: its end points bound
-  // the end points that pruning keeps, and its pieces' widest sheets the level of detail.
-  const std::optional<gs::Coarse_skeleton_level_of_detail> coarse =
-      gs::coarse_skeleton_level_of_detail(mesh, coarse_resolution, solid.frame());
   gs::prune_skeleton(
       skeleton,
       gs::parameters::combine(

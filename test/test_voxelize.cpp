@@ -1,5 +1,6 @@
 // Specification of CGAL/Geodesic_skeleton/voxelize.h.
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
+#include <CGAL/Geodesic_skeleton/join_pieces_joined_on_coarser_grid.h>
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
 #include <CGAL/Geodesic_skeleton/voxelize.h>
 #include <CGAL/Geodesic_skeleton/internal/voxelize/polygon_triangles.h>
@@ -312,6 +313,88 @@ BOOST_AUTO_TEST_CASE(a_gap_of_a_fraction_of_a_voxel_between_components_is_closed
                                                         gs::parameters::fill_holes(false)));
   const double h = s.frame().voxel_size();
   BOOST_TEST(double(s.size()) * h * h * h > 4. * 0.95);
+}
+
+// A voxel set of `keys` on a grid of voxels of `size`, axis-aligned, from the origin.
+template <typename VoxelSet>
+VoxelSet voxel_set(double size, const std::vector<gs::Voxel_key>& keys)
+{
+  gs::Voxel_box box;
+  for(const gs::Voxel_key& k : keys)
+    box.extend(k);
+  VoxelSet set;
+  set.reset(gs::Voxel_frame(gs::Voxel_frame::Vector{0, 0, 0},
+                            {gs::Voxel_frame::Vector{1, 0, 0}, gs::Voxel_frame::Vector{0, 1, 0},
+                             gs::Voxel_frame::Vector{0, 0, 1}},
+                            size),
+            box);
+  for(const gs::Voxel_key& k : keys)
+    set.insert(k);
+  return set;
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(the_pieces_in_one_coarser_piece_are_linked_by_their_nearest_voxels, VoxelSet,
+                              Voxel_set_models)
+{
+  // Fine voxels of 1, coarse voxels of 4: fine voxels 0 to 3 along an axis are coarse voxel 0.
+  const VoxelSet coarse = voxel_set<VoxelSet>(4, {{0, 0, 0}, {1, 0, 0}, {3, 0, 0}});
+  // Two pieces in coarse piece {0, 1}, nearest at (3, 0, 0) and (5, 1, 0); one in coarse
+  // voxel 3, a piece of its own: it stays apart.
+  VoxelSet fine = voxel_set<VoxelSet>(1, {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {5, 1, 0}, {6, 1, 0}, {13, 0, 0}});
+  BOOST_TEST(gs::join_pieces_joined_on_coarser_grid(fine, coarse) == 1u);
+  BOOST_TEST(test::components_26(fine) == 2);
+  BOOST_TEST(fine.size() == 8u); // one voxel links (3, 0, 0) and (5, 1, 0)
+  BOOST_TEST(fine.contains(gs::Voxel_key{4, 0, 0}) + fine.contains(gs::Voxel_key{4, 1, 0}) == 1);
+  BOOST_TEST(gs::join_pieces_joined_on_coarser_grid(fine, coarse) == 0u); // nothing left to join
+
+  // Voxels that touch at a corner are one piece already (26-connectivity).
+  VoxelSet corners = voxel_set<VoxelSet>(1, {{0, 0, 0}, {1, 1, 1}, {2, 2, 0}});
+  BOOST_TEST(gs::join_pieces_joined_on_coarser_grid(corners, coarse) == 0u);
+  BOOST_TEST(corners.size() == 3u);
+
+  // Three pieces in one coarse piece get two links, the shortest that join them all.
+  VoxelSet three = voxel_set<VoxelSet>(1, {{0, 0, 0}, {2, 0, 0}, {4, 0, 0}});
+  BOOST_TEST(gs::join_pieces_joined_on_coarser_grid(three, coarse) == 2u);
+  BOOST_TEST(test::components_26(three) == 1);
+  BOOST_TEST(three.size() == 5u);
+}
+
+BOOST_AUTO_TEST_CASE(two_boxes_a_coarser_grid_joins_are_joined_on_a_finer_one)
+{
+  // Two unit cubes side by side along x, 0.6 voxel apart at resolution 32: their surfaces
+  // touch neighbouring voxels there, and the solid is one piece. At 128 the gap is 2.4
+  // voxels, and the solid two pieces, until they are joined as at 32.
+  const double gap = 0.6 * 2. / (32. - 0.6);
+  test::Soup soup = test::box(0, 0, 0, 1, 1, 1);
+  test::append(soup, test::box(0, 0, 0, 1, 1, 1), 1 + gap, 0, 0);
+  const Mesh boxes = mesh_of(soup);
+  gs::Dense_voxel_grid coarse, fine;
+  gs::voxelize(boxes, coarse, gs::parameters::resolution(32));
+  gs::voxelize(boxes, fine, gs::parameters::resolution(128));
+  BOOST_REQUIRE(test::components_26(coarse) == 1);
+  BOOST_REQUIRE(test::components_26(fine) == 2);
+  const std::size_t before = fine.size();
+  BOOST_TEST(gs::join_pieces_joined_on_coarser_grid(fine, coarse) == 1u);
+  BOOST_TEST(test::components_26(fine) == 1);
+  BOOST_TEST(fine.size() - before <= 4u); // a link across the gap, a few voxels
+
+  // Three voxels of 32 apart, the grids agree: nothing is joined.
+  test::Soup apart = test::box(0, 0, 0, 1, 1, 1);
+  test::append(apart, test::box(0, 0, 0, 1, 1, 1), 1 + 3 * 2. / (32. - 3), 0, 0);
+  gs::voxelize(mesh_of(apart), coarse, gs::parameters::resolution(32));
+  gs::voxelize(mesh_of(apart), fine, gs::parameters::resolution(128));
+  BOOST_TEST(gs::join_pieces_joined_on_coarser_grid(fine, coarse) == 0u);
+  BOOST_TEST(test::components_26(fine) == 2);
+
+  // blobby_3cc.off's three open pieces: at 64, two of them come within a voxel; at 128 they
+  // are joined as at 64.
+  const Mesh blobby = test::demo_mesh<Mesh>("blobby_3cc.off");
+  gs::voxelize(blobby, coarse, gs::parameters::resolution(64));
+  gs::voxelize(blobby, fine, gs::parameters::resolution(128));
+  BOOST_REQUIRE(test::components_26(coarse) == 2);
+  BOOST_REQUIRE(test::components_26(fine) == 3);
+  BOOST_TEST(gs::join_pieces_joined_on_coarser_grid(fine, coarse) == 1u);
+  BOOST_TEST(test::components_26(fine) == 2);
 }
 
 BOOST_AUTO_TEST_CASE(bad_input_is_a_clear_error)

@@ -29,6 +29,7 @@
 #include <CGAL/Geodesic_skeleton/Voxelized_surface.h>
 #include <CGAL/Geodesic_skeleton/No_enclosed_volume.h>
 #include <CGAL/Geodesic_skeleton/voxelize.h>
+#include <CGAL/Geodesic_skeleton/join_pieces_joined_on_coarser_grid.h>
 #include <CGAL/Geodesic_skeleton/remove_small_pieces.h>
 #include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
 #include <CGAL/Geodesic_skeleton/Skeleton_radius_in_voxels_map.h>

@@ -75,6 +75,9 @@ struct Coarse_skeleton_level_of_detail
   /// the piece it is in (`widest_sheet_radius_of_pieces()`, in world units as
   /// `sheet_half_widths()` gives them), 0 for a piece without any.
   std::vector<double> piece_half_widths;
+  /// The solid on the coarser grid, as `voxelize()` made it (in that grid's own frame): the
+  /// pieces it joins, `join_pieces_joined_on_coarser_grid()` joins on the finer grid.
+  Dense_voxel_grid solid;
 };
 
 /// \ingroup PkgGeodesicSkeletonRef
@@ -82,7 +85,8 @@ struct Coarse_skeleton_level_of_detail
 /// finer grid: the end points of the pruned voxel skeleton (the branches that the level of
 /// detail of that resolution keeps) and the widest sheet of each piece of the voxel
 /// skeleton before pruning (the width that pruning judges the piece's twigs by), in the grid
-/// coordinates of `frame` (usually the finer grid's).
+/// coordinates of `frame` (usually the finer grid's), and the solid on that grid (the
+/// pieces it joins).
 ///
 /// The voxel stages run as `extract_control_skeleton()` runs them on the grid of its level
 /// of detail: `voxelize()`, `distance_transform()`, `thin()` (with the sheet radii, read at
@@ -125,6 +129,8 @@ coarse_skeleton_level_of_detail(const FaceGraph& mesh, int resolution, const Vox
   {
     return std::nullopt;
   }
+  Coarse_skeleton_level_of_detail coarse;
+  coarse.solid = solid; // before thinning, which deletes voxels of `solid`
   const Voxel_distance_field distances = distance_transform(solid, coarse_np);
   Sheet_radii sheet_radii, slanted_sheet_radii;
   thin(solid, distances,
@@ -138,7 +144,6 @@ coarse_skeleton_level_of_detail(const FaceGraph& mesh, int resolution, const Vox
   remove_small_pieces(skeleton, distances, coarse_np);
   cut_spurious_cycles(skeleton, mesh, parameters::combine(parameters::voxelized_surface(&std::as_const(surface)), coarse_np));
 
-  Coarse_skeleton_level_of_detail coarse;
   const auto in_frame = [&](const Voxel_key& k) { return frame.to_grid(solid.frame().centre(k)); };
   const Sheet_radii widest = widest_sheet_radius_of_pieces(skeleton, slanted_sheet_radii);
   std::vector<std::pair<Voxel_key, double>> in_voxel_order(widest.begin(), widest.end());

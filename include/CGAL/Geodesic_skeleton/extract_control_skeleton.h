@@ -17,6 +17,7 @@
 #include <CGAL/Geodesic_skeleton/coarse_skeleton_end_points.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/geodesic_mapping_function.h>
+#include <CGAL/Geodesic_skeleton/join_pieces_joined_on_coarser_grid.h>
 #include <CGAL/Geodesic_skeleton/move_skeleton_inside.h>
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
@@ -53,7 +54,8 @@ struct Control_skeleton_report
 {
   int resolution = 0;              ///< the longest principal extent of the mesh, in voxels
   double voxel_size = 0;           ///< edge of a voxel, in world units
-  std::size_t solid_voxels = 0;    ///< voxels of the solid interior
+  std::size_t solid_voxels = 0;    ///< voxels of the solid interior, with the links of `pieces_joined`
+  std::size_t pieces_joined = 0;   ///< links between pieces that the grid of the level of detail joins (`join_pieces_joined_on_coarser_grid()`)
   Small_pieces_report small_pieces; ///< the skeleton's pieces, and the small detached ones removed
   Skeleton_statistics thinned;     ///< the curve skeleton after thinning
   std::size_t spurious_cycles_cut = 0; ///< cycles the mesh has no handle for, opened (`cut_spurious_cycles()`)
@@ -68,10 +70,11 @@ struct Control_skeleton_report
   std::size_t reeb_nodes = 0;      ///< nodes of the Reeb graph, when one was asked for
   std::size_t reeb_edges = 0;      ///< arcs of the Reeb graph, when one was asked for
   /// Wall-clock time of each stage in milliseconds, in the order they ran: "voxelize",
-  /// "distance_transform", "thin", "thinned_graph" (the graph and counts of the thinned
-  /// skeleton), "remove_small_pieces", "cut_spurious_cycles", "level_of_detail" (the skeleton
-  /// at `level_of_detail_resolution`, when finer), "prune", "to_graph", "smooth",
-  /// "curve_points_inside", "split_into_bones", and "reeb_graph" when asked for.
+  /// "level_of_detail" (the skeleton at `level_of_detail_resolution`, when finer),
+  /// "join_pieces" (when finer), "distance_transform", "thin", "thinned_graph" (the graph
+  /// and counts of the thinned skeleton), "remove_small_pieces", "cut_spurious_cycles",
+  /// "prune", "to_graph", "smooth", "curve_points_inside", "split_into_bones", and
+  /// "reeb_graph" when asked for.
   std::vector<std::pair<std::string, double>> timings_ms;
   double total_ms = 0;             ///< the whole call, in milliseconds
 };
@@ -205,8 +208,11 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 ///
 /// At a resolution finer than `level_of_detail_resolution` (default: the default
 /// resolution, 64), `coarse_skeleton_level_of_detail()` first runs the same voxel stages at
-/// that resolution, up to `prune_skeleton()`, and the end points of that skeleton's graph are
-/// given to the finer `prune_skeleton()` (its `coarse_end_points`, with
+/// that resolution, up to `prune_skeleton()`, right after `voxelize()`. The pieces that its
+/// solid joins (parts within about a voxel of that grid of each other) are joined on the
+/// finer grid too (`join_pieces_joined_on_coarser_grid()`, before `distance_transform()`),
+/// so that which parts the rig joins does not depend on the resolution. The end points of
+/// that skeleton's graph are given to the finer `prune_skeleton()` (its `coarse_end_points`, with
 /// `default_coarse_end_point_tolerance()`, 4 voxels of the coarser grid; none when the mesh
 /// encloses no volume there): the finer skeleton then keeps no more end points than the
 /// coarser one has, where its extra end branches are detail under 3 times the level of
@@ -382,6 +388,24 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   clock.finished("voxelize");
   const auto with_surface = parameters::combine(parameters::voxelized_surface(&std::as_const(surface)), np);
 
+  // A finer grid than the level of detail's takes from it which branches and which pieces
+  // the rig has (the resolution is a sampling choice, not a modelling one).
+  report.level_of_detail_resolution = choose_parameter(get_parameter(np, internal_np::level_of_detail_resolution_tag),
+                                                       default_voxel_resolution);
+  const bool finer_than_level_of_detail =
+      report.level_of_detail_resolution > 0 && report.level_of_detail_resolution < report.resolution;
+  std::optional<Coarse_skeleton_level_of_detail> coarse;
+  if(finer_than_level_of_detail)
+    coarse = coarse_skeleton_level_of_detail(mesh, report.level_of_detail_resolution, solid.frame(), np);
+  clock.finished("level_of_detail");
+  if(coarse)
+  {
+    report.pieces_joined = join_pieces_joined_on_coarser_grid(solid, coarse->solid);
+    report.solid_voxels = solid.size();
+    coarse->solid = Dense_voxel_grid(); // not needed further
+  }
+  clock.finished("join_pieces");
+
   const Voxel_distance_field distances = distance_transform(solid, np);
   clock.finished("distance_transform");
 
@@ -389,10 +413,6 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   // thin at the default resolution are thin at any other.
   report.thin_part_radius = choose_parameter(get_parameter(np, internal_np::thin_part_radius_tag),
                                              default_thin_part_radius(report.resolution));
-  report.level_of_detail_resolution = choose_parameter(get_parameter(np, internal_np::level_of_detail_resolution_tag),
-                                                       default_voxel_resolution);
-  const bool finer_than_level_of_detail =
-      report.level_of_detail_resolution > 0 && report.level_of_detail_resolution < report.resolution;
   Sheet_radii sheet_radii, slanted_sheet_radii;
   thin(solid, distances,
        parameters::combine(
@@ -422,17 +442,12 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   clock.finished("cut_spurious_cycles");
   // Pruning judges a piece's twigs by its widest sheet, and may keep a chain beside it. On
   // the grid of the level of detail, the widest sheet is read across close levels, which
-  // measures a thick slanted plate; a finer grid gets it from that grid (`coarse` below).
+  // measures a thick slanted plate; a finer grid gets it from that grid (`coarse` above).
   const Sheet_radii widest_sheet_of_piece =
       widest_sheet_radius_of_pieces(skeleton, finer_than_level_of_detail ? sheet_radii : slanted_sheet_radii);
 
   // The end branches that a finer grid resolves beyond the level of detail of the default
   // one are snipped as long as the skeleton has more end points than it has there.
-  std::optional<Coarse_skeleton_level_of_detail> coarse;
-  if(finer_than_level_of_detail)
-    coarse = coarse_skeleton_level_of_detail(mesh, report.level_of_detail_resolution, solid.frame(), np);
-  clock.finished("level_of_detail");
-
   report.pruning = prune_skeleton(
       skeleton,
       parameters::combine(
