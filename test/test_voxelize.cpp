@@ -352,6 +352,11 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(the_pieces_in_one_coarser_piece_are_linked_by_thei
   BOOST_TEST(gs::join_pieces_joined_on_coarser_grid(corners, coarse) == 0u);
   BOOST_TEST(corners.size() == 3u);
 
+  // A coarser grid with no voxel joins nothing.
+  VoxelSet two = voxel_set<VoxelSet>(1, {{0, 0, 0}, {2, 0, 0}});
+  BOOST_TEST(gs::join_pieces_joined_on_coarser_grid(two, voxel_set<VoxelSet>(4, {})) == 0u);
+  BOOST_TEST(two.size() == 2u);
+
   // Three pieces in one coarse piece get two links, the shortest that join them all.
   VoxelSet three = voxel_set<VoxelSet>(1, {{0, 0, 0}, {2, 0, 0}, {4, 0, 0}});
   BOOST_TEST(gs::join_pieces_joined_on_coarser_grid(three, coarse) == 2u);

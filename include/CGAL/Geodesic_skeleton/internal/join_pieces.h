@@ -94,10 +94,7 @@ std::size_t count_pieces(const VoxelSet& voxels)
 template <typename VoxelSet, typename Visit>
 std::size_t search_pieces(const VoxelSet& voxels, const Visit& visit)
 {
-  Voxel_box box = voxels.bounding_box();
-  box.min = box.min + Voxel_key{-1, -1, -1};
-  box.max = box.max + Voxel_key{1, 1, 1};
-  const Grid_layout layout(box);
+  const Grid_layout layout(voxels.bounding_box().grown(1));
   enum : std::uint8_t { ABSENT, UNSEEN, SEEN };
   std::vector<std::uint8_t> cell(layout.volume(), ABSENT);
   voxels.for_each([&](const Voxel_key& k) { cell[layout.index(k)] = UNSEEN; });
