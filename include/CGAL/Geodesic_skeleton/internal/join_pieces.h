@@ -119,6 +119,15 @@ Runs_and_pieces runs_and_pieces(const VoxelSet& voxels)
   return out;
 }
 
+// Calls `f(k, piece)` for every voxel of the runs.
+template <typename Function>
+void for_each_voxel_of_runs(const Runs_and_pieces& rp, const Function& f)
+{
+  for(std::size_t i = 0; i < rp.runs.size(); ++i)
+    for(int x = rp.runs[i].x0; x <= rp.runs[i].x1; ++x)
+      f(Voxel_key{x, rp.runs[i].y, rp.runs[i].z}, rp.piece[i]);
+}
+
 // The piece of every voxel of a (coarse) voxel set, read by key.
 class Voxel_pieces
 {
@@ -126,10 +135,9 @@ public:
   template <typename VoxelSet>
   explicit Voxel_pieces(const VoxelSet& voxels) : m_layout(voxels.bounding_box()), m_piece(m_layout.volume(), -1)
   {
-    const Runs_and_pieces rp = runs_and_pieces(voxels);
-    for(std::size_t i = 0; i < rp.runs.size(); ++i)
-      for(int x = rp.runs[i].x0; x <= rp.runs[i].x1; ++x)
-        m_piece[m_layout.index(Voxel_key{x, rp.runs[i].y, rp.runs[i].z})] = std::int32_t(rp.piece[i]);
+    for_each_voxel_of_runs(runs_and_pieces(voxels), [&](const Voxel_key& k, std::size_t piece) {
+      m_piece[m_layout.index(k)] = std::int32_t(piece);
+    });
   }
   // The piece of voxel `k`, or -1 when `k` is not in the set.
   std::int32_t operator()(const Voxel_key& k) const
@@ -174,15 +182,6 @@ private:
   Voxel_frame::Vector m_offset;
   Voxel_frame::Vector m_step[3]; // the change of the coordinates for a step along each axis of `from`
 };
-
-// Calls `f(k, piece)` for every voxel of the runs.
-template <typename Function>
-void for_each_voxel_of_runs(const Runs_and_pieces& rp, const Function& f)
-{
-  for(std::size_t i = 0; i < rp.runs.size(); ++i)
-    for(int x = rp.runs[i].x0; x <= rp.runs[i].x1; ++x)
-      f(Voxel_key{x, rp.runs[i].y, rp.runs[i].z}, rp.piece[i]);
-}
 
 // Where the pieces of a finer solid lie on a coarser grid.
 struct Pieces_on_coarser_grid
