@@ -121,6 +121,17 @@ struct Voxel_box
   }
 };
 
+namespace internal {
+
+// The squared Euclidean distance between the centres of two voxels, in voxels.
+inline std::int64_t squared_distance_between(const Voxel_key& a, const Voxel_key& b)
+{
+  const std::int64_t dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
+  return dx * dx + dy * dy + dz * dz;
+}
+
+} // namespace internal
+
 /// \ingroup PkgGeodesicSkeletonRef
 /// The 26 offsets of the 26-neighbourhood (the voxels sharing a face, an edge or a
 /// corner), in `(z, y, x)` lexicographic order from `(-1, -1, -1)` to `(1, 1, 1)`,

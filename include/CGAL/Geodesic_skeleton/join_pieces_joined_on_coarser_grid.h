@@ -11,9 +11,10 @@
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/internal/join_pieces.h>
 
+#include <boost/pending/disjoint_sets.hpp>
+
 #include <algorithm>
 #include <cstddef>
-#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -64,20 +65,15 @@ std::size_t join_pieces_joined_on_coarser_grid(VoxelSet& solid, const CoarseVoxe
   const std::vector<internal::Contact_voxel> contacts = internal::contact_voxels(solid, fine, on, cell_of);
 
   // Kruskal: the shortest links that join pieces not yet joined.
-  std::vector<std::size_t> root(fine.pieces);
-  std::iota(root.begin(), root.end(), std::size_t(0));
-  const auto find_root = [&](std::size_t p) {
-    while(root[p] != p)
-      p = root[p] = root[root[p]];
-    return p;
-  };
+  boost::disjoint_sets_with_storage<> joined_pieces(fine.pieces);
   std::size_t joined = 0;
   for(const internal::Piece_link& link : internal::shortest_links(contacts, on.coarse_of))
   {
-    const std::size_t a = find_root(contacts[link.from].piece), b = find_root(contacts[link.to].piece);
+    const std::size_t a = joined_pieces.find_set(contacts[link.from].piece);
+    const std::size_t b = joined_pieces.find_set(contacts[link.to].piece);
     if(a == b)
       continue;
-    root[a] = b;
+    joined_pieces.link(a, b);
     for(const Voxel_key& k : internal::voxels_of_segment(contacts[link.from].key, contacts[link.to].key))
       solid.insert(k);
     ++joined;

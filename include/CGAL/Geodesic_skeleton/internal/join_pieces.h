@@ -11,6 +11,8 @@
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
 
+#include <boost/pending/disjoint_sets.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -83,14 +85,7 @@ Runs_and_pieces runs_and_pieces(const VoxelSet& voxels)
   for(std::size_t i = 1; i < row_start.size(); ++i)
     row_start[i] += row_start[i - 1];
 
-  std::vector<std::size_t> root(runs.size());
-  for(std::size_t i = 0; i < runs.size(); ++i)
-    root[i] = i;
-  const auto find_root = [&](std::size_t i) {
-    while(root[i] != i)
-      i = root[i] = root[root[i]];
-    return i;
-  };
+  boost::disjoint_sets_with_storage<> pieces(runs.size());
   for(std::size_t i = 0; i < runs.size(); ++i)
   {
     const Voxel_run& r = runs[i];
@@ -103,7 +98,7 @@ Runs_and_pieces runs_and_pieces(const VoxelSet& voxels)
       const std::size_t row = row_of(y, z);
       for(std::size_t j = row_start[row]; j < row_start[row + 1]; ++j)
         if(runs[j].x0 <= r.x1 + 1 && r.x0 <= runs[j].x1 + 1)
-          root[find_root(i)] = find_root(j);
+          pieces.union_set(i, j);
     }
   }
   const std::size_t none = std::size_t(-1);
@@ -111,7 +106,7 @@ Runs_and_pieces runs_and_pieces(const VoxelSet& voxels)
   out.piece.resize(runs.size());
   for(std::size_t i = 0; i < runs.size(); ++i)
   {
-    std::size_t& n = number[find_root(i)];
+    std::size_t& n = number[pieces.find_set(i)];
     if(n == none)
       n = out.pieces++;
     out.piece[i] = n;
@@ -211,8 +206,8 @@ struct Pieces_on_coarser_grid
   }
 };
 
-// The coarse voxel of each voxel centre of the pieces `fine`, and the coarse piece of each
-// piece: the piece of `coarse_solid` that holds the most of its voxel centres (ties: the
+// Which pieces of `fine` have voxel centres in each coarse voxel, and the coarse piece of
+// each piece: the piece of `coarse_solid` that holds the most of its voxel centres (ties: the
 // first). Complexity: O(V + C) for the V voxels of `fine` and the C voxels of the coarse box.
 template <typename CoarseVoxelSet, typename CellOf>
 Pieces_on_coarser_grid pieces_on_coarser_grid(const Runs_and_pieces& fine, const CoarseVoxelSet& coarse_solid,
@@ -325,8 +320,7 @@ inline std::vector<Piece_link> shortest_links(const std::vector<Contact_voxel>& 
           continue;
         const Voxel_key& ka = contacts[a].key;
         const Voxel_key& kb = contacts[b].key;
-        const double length = std::sqrt(double(ka.x - kb.x) * (ka.x - kb.x) + double(ka.y - kb.y) * (ka.y - kb.y) +
-                                        double(ka.z - kb.z) * (ka.z - kb.z));
+        const double length = std::sqrt(double(squared_distance_between(ka, kb)));
         const Piece_link link{length, a, b};
         const auto [it, inserted] = shortest.emplace(std::make_pair(pa, pb), link);
         if(!inserted && shorter_link(link, it->second))

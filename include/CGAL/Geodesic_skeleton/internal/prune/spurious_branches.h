@@ -28,11 +28,6 @@ namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
 
-inline std::int64_t squared_distance_between(const Voxel_key& a, const Voxel_key& b)
-{
-  const std::int64_t dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
-  return dx * dx + dy * dy + dz * dz;
-}
 
 // An end branch: the voxels from an end point up to (not including) its junction.
 struct End_branch
