@@ -28,6 +28,8 @@
 #include <string>
 #include <vector>
 
+BOOST_AUTO_TEST_SUITE(voxelize)
+
 namespace gs = CGAL::Geodesic_skeleton;
 namespace test = Geodesic_skeleton_test;
 
@@ -59,8 +61,6 @@ bool throws_with(F f, const std::string& text)
 
 
 } // namespace
-
-BOOST_AUTO_TEST_SUITE(voxelize)
 
 BOOST_AUTO_TEST_CASE_TEMPLATE(a_box_fills_its_voxels, VoxelSet, Voxel_set_models)
 {
@@ -362,6 +362,13 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(the_pieces_in_one_coarser_piece_are_linked_by_thei
   BOOST_TEST(gs::join_pieces_joined_on_coarser_grid(three, coarse) == 2u);
   BOOST_TEST(test::components_26(three) == 1);
   BOOST_TEST(three.size() == 5u);
+
+  // The solids passed the wrong way round: a clear error, and the solid is left as it was.
+  VoxelSet finer = voxel_set<VoxelSet>(1, {{0, 0, 0}, {2, 0, 0}});
+  VoxelSet coarser = voxel_set<VoxelSet>(4, {{0, 0, 0}});
+  BOOST_CHECK_THROW(gs::join_pieces_joined_on_coarser_grid(coarser, finer), std::invalid_argument);
+  BOOST_TEST(coarser.size() == 1u);
+  BOOST_TEST(gs::join_pieces_joined_on_coarser_grid(finer, coarser) == 1u);
 }
 
 BOOST_AUTO_TEST_CASE(two_boxes_a_coarser_grid_joins_are_joined_on_a_finer_one)

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -48,6 +49,8 @@ namespace Geodesic_skeleton {
 /// \returns the number of links inserted (the number of pieces of `solid` goes down by as
 ///          many).
 /// \pre both frames place the same mesh (`voxelize()` of one mesh at two resolutions).
+/// \throws std::invalid_argument when the voxels of `coarse_solid` are smaller than those
+///         of `solid`: its grid is not the coarser.
 ///
 /// \b Complexity: O(S + R) time and O(R) memory for the S voxels of `solid` in R runs along
 /// x (a union-find over the runs counts its pieces); when it has several, also O(S + C) time
@@ -57,6 +60,9 @@ namespace Geodesic_skeleton {
 template <typename VoxelSet, typename CoarseVoxelSet>
 std::size_t join_pieces_joined_on_coarser_grid(VoxelSet& solid, const CoarseVoxelSet& coarse_solid)
 {
+  if(coarse_solid.frame().voxel_size() < solid.frame().voxel_size())
+    throw std::invalid_argument("join_pieces_joined_on_coarser_grid: the coarser solid's voxels are smaller than "
+                                "the solid's; pass the solid of the coarser grid second");
   const internal::Runs_and_pieces fine = internal::runs_and_pieces(solid);
   if(fine.pieces < 2)
     return 0;

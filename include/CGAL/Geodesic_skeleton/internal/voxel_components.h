@@ -4,8 +4,11 @@
 #ifndef CGAL_GEODESIC_SKELETON_INTERNAL_VOXEL_COMPONENTS_H
 #define CGAL_GEODESIC_SKELETON_INTERNAL_VOXEL_COMPONENTS_H
 
-// The package's one search for the 26-connected components of a list of voxels
-// (remove_small_pieces(), the branched regions of prune_skeleton()).
+// The 26-connected components of a list of voxels, for the curve skeletons (the pieces
+// that remove_small_pieces() and prune_skeleton() measure, the branched regions of
+// prune_skeleton()). A solid, with far more voxels, is searched along its runs
+// (runs_and_pieces() in join_pieces.h) or over its box (solid_piece_sizes() in
+// remove_small_pieces.h).
 
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 
