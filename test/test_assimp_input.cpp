@@ -22,6 +22,8 @@
 #include <string>
 #include <vector>
 
+BOOST_AUTO_TEST_SUITE(assimp_input)
+
 namespace gs = CGAL::Geodesic_skeleton;
 namespace shapes = Geodesic_skeleton_test;
 
@@ -74,8 +76,6 @@ void check_reads_back_as_the_bar(const std::string& path, bool at_origin)
 }
 
 } // namespace
-
-BOOST_AUTO_TEST_SUITE(assimp_input)
 
 BOOST_AUTO_TEST_CASE(a_skinned_gltf_written_by_the_package_reads_back)
 {

@@ -32,6 +32,8 @@
 #include <utility>
 #include <vector>
 
+BOOST_AUTO_TEST_SUITE(control_skeleton)
+
 namespace gs = CGAL::Geodesic_skeleton;
 namespace test = Geodesic_skeleton_test;
 
@@ -228,8 +230,6 @@ std::vector<double> mean_distance_to_collapsed_vertices(const Mcf_of_cow& mcf)
 }
 
 } // namespace
-
-BOOST_AUTO_TEST_SUITE(control_skeleton)
 
 // --- smooth_skeleton -------------------------------------------------------------------
 

@@ -13,6 +13,8 @@
 #include <stdexcept>
 #include <string>
 
+BOOST_AUTO_TEST_SUITE(control_skeleton_json)
+
 namespace gs = CGAL::Geodesic_skeleton;
 namespace shapes = Geodesic_skeleton_test;
 
@@ -52,8 +54,6 @@ json chain()
 }
 
 } // namespace
-
-BOOST_AUTO_TEST_SUITE(control_skeleton_json)
 
 BOOST_AUTO_TEST_CASE(the_json_that_skeletonize_writes_reads_back)
 {

@@ -24,6 +24,8 @@
 #include <utility>
 #include <vector>
 
+BOOST_AUTO_TEST_SUITE(cut_spurious_cycles)
+
 namespace gs = CGAL::Geodesic_skeleton;
 namespace test = Geodesic_skeleton_test;
 
@@ -208,8 +210,6 @@ void expect_the_one_cycle_opened(const Cut_result& r)
 }
 
 } // namespace
-
-BOOST_AUTO_TEST_SUITE(cut_spurious_cycles)
 
 BOOST_AUTO_TEST_CASE(a_surface_that_overlaps_itself_is_cut_where_it_does)
 {

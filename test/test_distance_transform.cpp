@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+BOOST_AUTO_TEST_SUITE(distance_transform)
+
 namespace gs = CGAL::Geodesic_skeleton;
 
 namespace {
@@ -39,8 +41,6 @@ std::uint32_t brute_force(const VoxelSet& s, const gs::Voxel_key& k, const gs::V
 }
 
 } // namespace
-
-BOOST_AUTO_TEST_SUITE(distance_transform)
 
 BOOST_AUTO_TEST_CASE_TEMPLATE(it_equals_the_brute_force_squared_distance, VoxelSet, Voxel_set_models)
 {

@@ -26,6 +26,8 @@
 #include <utility>
 #include <vector>
 
+BOOST_AUTO_TEST_SUITE(extract_control_skeleton)
+
 namespace gs = CGAL::Geodesic_skeleton;
 namespace test = Geodesic_skeleton_test;
 
@@ -131,8 +133,6 @@ Rigs_at_64_and_128 rigs_at_64_and_128(const Mesh& mesh)
 }
 
 } // namespace
-
-BOOST_AUTO_TEST_SUITE(extract_control_skeleton)
 
 // The default smallest_radius is half a voxel of the default grid, the smallest MAT radius
 // there: at the default resolution it changes no joint; at 128, where thin parts are

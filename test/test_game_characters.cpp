@@ -27,6 +27,8 @@
 #include <limits>
 #include <vector>
 
+BOOST_AUTO_TEST_SUITE(game_characters)
+
 namespace gs = CGAL::Geodesic_skeleton;
 namespace params = CGAL::Geodesic_skeleton::parameters;
 namespace test = Geodesic_skeleton_test;
@@ -136,8 +138,6 @@ bool an_end_reaches(const Control& c, const Vec& tip, double tolerance)
 }
 
 } // namespace
-
-BOOST_AUTO_TEST_SUITE(game_characters)
 
 BOOST_AUTO_TEST_CASE(the_mesh_is_as_artists_make_it)
 {

@@ -20,6 +20,8 @@
 #include <stdexcept>
 #include <vector>
 
+BOOST_AUTO_TEST_SUITE(geodesic_distances)
+
 namespace gs = CGAL::Geodesic_skeleton;
 namespace test = Geodesic_skeleton_test;
 
@@ -67,8 +69,6 @@ Relative_errors relative_errors(const std::vector<double>& computed, const std::
 }
 
 } // namespace
-
-BOOST_AUTO_TEST_SUITE(geodesic_distances)
 
 // Shortest edge paths over-estimate the geodesic by a factor that depends on the direction
 // relative to the triangulation. On an equilateral lattice the factor at angle phi from an

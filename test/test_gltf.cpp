@@ -25,6 +25,8 @@
 #include <string>
 #include <vector>
 
+BOOST_AUTO_TEST_SUITE(gltf)
+
 namespace gs = CGAL::Geodesic_skeleton;
 namespace params = CGAL::Geodesic_skeleton::parameters;
 namespace shapes = Geodesic_skeleton_test;
@@ -246,8 +248,6 @@ tinygltf::Model skinned_round_trip(const Mesh& mesh, const Control& skeleton, co
 }
 
 } // namespace
-
-BOOST_AUTO_TEST_SUITE(gltf)
 
 BOOST_AUTO_TEST_CASE(a_glb_file_reads_back_with_its_counts_weights_and_bind_matrices)
 {

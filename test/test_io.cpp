@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+BOOST_AUTO_TEST_SUITE(io)
+
 namespace gs = CGAL::Geodesic_skeleton;
 namespace test = Geodesic_skeleton_test;
 
@@ -141,8 +143,6 @@ struct Bvh_file
 };
 
 } // namespace
-
-BOOST_AUTO_TEST_SUITE(io)
 
 BOOST_AUTO_TEST_CASE(a_bvh_read_back_has_the_same_hierarchy_and_offsets)
 {

@@ -6,12 +6,12 @@
 
 #include <type_traits>
 
+BOOST_AUTO_TEST_SUITE(parameters)
+
 namespace gs = CGAL::Geodesic_skeleton;
 namespace params = CGAL::Geodesic_skeleton::parameters;
 using CGAL::parameters::choose_parameter;
 using CGAL::parameters::get_parameter;
-
-BOOST_AUTO_TEST_SUITE(parameters)
 
 BOOST_AUTO_TEST_CASE(a_package_parameter_is_found_by_its_tag)
 {

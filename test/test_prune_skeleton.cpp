@@ -30,6 +30,8 @@
 #include <unordered_map>
 #include <vector>
 
+BOOST_AUTO_TEST_SUITE(prune_skeleton)
+
 namespace gs = CGAL::Geodesic_skeleton;
 using gs::Voxel_key;
 using Voxel_set_models = boost::mpl::list<gs::Dense_voxel_grid, gs::Sparse_voxel_set>;
@@ -104,8 +106,6 @@ std::size_t components_of(const std::set<Voxel_key>& voxels)
 }
 
 } // namespace
-
-BOOST_AUTO_TEST_SUITE(prune_skeleton)
 
 BOOST_AUTO_TEST_CASE_TEMPLATE(points_are_classified_as_in_definition_7, VoxelSet, Voxel_set_models)
 {

@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+BOOST_AUTO_TEST_SUITE(read_mesh)
+
 namespace gs = CGAL::Geodesic_skeleton;
 namespace gio = CGAL::Geodesic_skeleton::IO;
 
@@ -89,8 +91,6 @@ gio::internal::Indexed_soup random_soup(std::mt19937& random)
 }
 
 } // namespace
-
-BOOST_AUTO_TEST_SUITE(read_mesh)
 
 BOOST_AUTO_TEST_CASE(the_fast_path_gives_the_mesh_of_CGALs_readers_on_every_demo_mesh)
 {

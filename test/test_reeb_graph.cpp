@@ -20,6 +20,8 @@
 #include <set>
 #include <vector>
 
+BOOST_AUTO_TEST_SUITE(reeb_graph)
+
 namespace gs = CGAL::Geodesic_skeleton;
 namespace test = Geodesic_skeleton_test;
 
@@ -97,8 +99,6 @@ Mesh rotated_and_moved(const Mesh& mesh)
 }
 
 } // namespace
-
-BOOST_AUTO_TEST_SUITE(reeb_graph)
 
 BOOST_AUTO_TEST_CASE(a_torus_with_a_height_function_gives_one_cycle)
 {

@@ -28,6 +28,8 @@
 #include <string>
 #include <vector>
 
+BOOST_AUTO_TEST_SUITE(robustness)
+
 namespace gs = CGAL::Geodesic_skeleton;
 namespace params = CGAL::Geodesic_skeleton::parameters;
 namespace test = Geodesic_skeleton_test;
@@ -145,8 +147,6 @@ std::string bad_mesh(const std::string& name) { return std::string(GEODESIC_SKEL
 const Box bar{0, 0, 0, 1, 1, 4};
 
 } // namespace
-
-BOOST_AUTO_TEST_SUITE(robustness)
 
 // ---- Section 1: bad meshes give clear errors ------------------------------------------
 

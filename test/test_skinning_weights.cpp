@@ -16,6 +16,8 @@
 #include <stdexcept>
 #include <vector>
 
+BOOST_AUTO_TEST_SUITE(skinning_weights)
+
 namespace gs = CGAL::Geodesic_skeleton;
 namespace params = CGAL::Geodesic_skeleton::parameters;
 namespace shapes = Geodesic_skeleton_test;
@@ -40,8 +42,6 @@ double weight_of(const gs::Bone_weights& w, std::size_t bone)
 }
 
 } // namespace
-
-BOOST_AUTO_TEST_SUITE(skinning_weights)
 
 BOOST_AUTO_TEST_CASE(weights_are_non_negative_sorted_and_sum_to_one)
 {

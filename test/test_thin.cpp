@@ -20,6 +20,8 @@
 #include <stdexcept>
 #include <vector>
 
+BOOST_AUTO_TEST_SUITE(thin)
+
 namespace gs = CGAL::Geodesic_skeleton;
 namespace test = Geodesic_skeleton_test;
 
@@ -176,8 +178,6 @@ void thin_set(VoxelSet& s)
 }
 
 } // namespace
-
-BOOST_AUTO_TEST_SUITE(thin)
 
 BOOST_AUTO_TEST_CASE(the_simple_point_test_agrees_with_the_definition)
 {

@@ -28,6 +28,8 @@
 #include <set>
 #include <stdexcept>
 
+BOOST_AUTO_TEST_SUITE(to_graph)
+
 namespace gs = CGAL::Geodesic_skeleton;
 namespace test = Geodesic_skeleton_test;
 
@@ -84,8 +86,6 @@ bool maps_every_vertex_once(const Graph& g, const FaceGraph& mesh)
 
 
 } // namespace
-
-BOOST_AUTO_TEST_SUITE(to_graph)
 
 BOOST_AUTO_TEST_CASE_TEMPLATE(a_cylinder_gives_one_path_along_its_axis, VoxelSet, Voxel_set_models)
 {

@@ -36,6 +36,8 @@
 #include <utility>
 #include <vector>
 
+BOOST_AUTO_TEST_SUITE(voxel_sets)
+
 namespace gs = CGAL::Geodesic_skeleton;
 namespace test = Geodesic_skeleton_test;
 
@@ -93,8 +95,6 @@ Stage_outputs run_voxel_stages(const Mesh& mesh, AsField as_field)
 }
 
 } // namespace
-
-BOOST_AUTO_TEST_SUITE(voxel_sets)
 
 // The archetypes have the concepts' members and nothing more: this compiles only if no
 // stage asks more of a voxel set or of a distance field than its concept says.
