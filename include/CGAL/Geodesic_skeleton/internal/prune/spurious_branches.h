@@ -18,7 +18,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <cstdint>
 #include <limits>
 #include <tuple>
 #include <unordered_map>
@@ -27,7 +26,6 @@
 namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
-
 
 // An end branch: the voxels from an end point up to (not including) its junction.
 struct End_branch
