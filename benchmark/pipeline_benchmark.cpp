@@ -151,6 +151,10 @@ Pruning_counts pruning_counts(const Mesh& mesh, int resolution)
                     radius, gs::parameters::coarse_end_points(coarse ? &std::as_const(coarse->end_points) : nullptr),
                     gs::parameters::coarse_end_point_tolerance(
                         gs::default_coarse_end_point_tolerance(resolution, gs::default_voxel_resolution))));
+  if(coarse) // the limbs that the coarser skeleton ends in and this one lacks, grafted back
+    gs::graft_coarse_end_branches(skeleton, distances, coarse->end_points,
+                                  gs::parameters::coarse_end_point_tolerance(gs::default_coarse_end_point_tolerance(
+                                      resolution, gs::default_voxel_resolution)));
   c.branched_after = gs::count_skeleton_points(skeleton).branched_connection;
   c.pruned = skeleton.size();
   return c;

@@ -578,6 +578,7 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
         {"thinned", stage_json(report.thinned)},
         {"spurious_cycles", {{"cut", report.spurious_cycles_cut}}},
         {"pruned", stage_json(report.pruned)},
+        {"grafted", {{"end_branches", report.coarse_end_branches_grafted}}},
         {"inside", {{"curve_points_moved", report.curve_points_moved_inside},
                     {"joints_moved", report.joints_moved_inside}}}};
     nlohmann::json computed = {"curve_skeleton", "control_skeleton"};

@@ -17,6 +17,7 @@
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
 #include <CGAL/Geodesic_skeleton/coarse_skeleton_end_points.h>
+#include <CGAL/Geodesic_skeleton/graft_coarse_end_branches.h>
 #include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/join_pieces_joined_on_coarser_grid.h>
@@ -120,6 +121,13 @@ int main(int argc, char* argv[])
             GS::parameters::coarse_end_points(coarse ? &coarse->end_points : nullptr),
             GS::parameters::coarse_end_point_tolerance(
                 GS::default_coarse_end_point_tolerance(resolution, GS::default_voxel_resolution))));
+    //    The limbs that the coarser skeleton ends in and thinning left this one without (a
+    //    leg thinned to a stub), grafted back along the middle of the solid.
+    const std::size_t grafted =
+        coarse ? GS::graft_coarse_end_branches(skeleton, distances, coarse->end_points,
+                                               GS::parameters::coarse_end_point_tolerance(
+                                                   GS::default_coarse_end_point_tolerance(resolution, GS::default_voxel_resolution)))
+               : 0;
 
     // 7. The curve skeleton graph: points in the mesh's coordinates, radii, mesh vertices.
     GS::Curve_skeleton<Point, vertex_descriptor> curve;
@@ -140,7 +148,8 @@ int main(int argc, char* argv[])
     if(coarse)
       std::cout << "level of detail:     " << coarse->end_points.size() << " end points at resolution "
                 << GS::default_voxel_resolution << ", " << pruning.snipped_beyond_coarse_detail
-                << " branches snipped beyond it, " << pruning.cut_back_branches << " cut back to it\n";
+                << " branches snipped beyond it, " << pruning.cut_back_branches << " cut back to it, " << grafted
+                << " grafted\n";
   }
   catch(const std::exception& e)
   {

@@ -369,6 +369,20 @@ BOOST_AUTO_TEST_CASE(a_finer_grid_keeps_the_end_points_of_the_default_one)
                     std::invalid_argument);
 }
 
+// The tripod's three legs are one thick block each; at 128 thinning leaves one of them a
+// stub that pruning takes, and the level of detail grafts the leg back: the rig has the
+// tripod's three ends at both resolutions.
+BOOST_AUTO_TEST_CASE(a_finer_grid_keeps_the_limbs_of_the_default_one)
+{
+  const Rigs_at_64_and_128 rigs = rigs_at_64_and_128(test::demo_mesh<Mesh>("tripod.off"));
+  BOOST_TEST(joints_of_kind(rigs.at_64, gs::Joint_kind::end) == 3u);
+  BOOST_TEST(joints_of_kind(rigs.at_128, gs::Joint_kind::end) == 3u);
+  BOOST_TEST(joints_of_kind(rigs.every_branch_at_128, gs::Joint_kind::end) == 2u);
+  BOOST_TEST(rigs.coarse.coarse_end_branches_grafted == 0u);
+  BOOST_TEST(rigs.fine.coarse_end_branches_grafted == 1u);
+  BOOST_TEST(farthest_end_point_from(rigs.at_128, rigs.at_64) <= 4 * rigs.coarse.voxel_size);
+}
+
 // The elephant's ears are thin flaps: thinning leaves a bush of rim branches in each, which
 // the level of detail snips down to one chain per ear, so the rig has an end per leg, the
 // trunk and the ears, not 15 ends of which most are in the ears.
@@ -940,13 +954,18 @@ BOOST_AUTO_TEST_CASE(the_stages_composed_by_hand_on_a_finer_grid_give_the_same_s
   gs::remove_small_pieces(skeleton, distances);
   gs::cut_spurious_cycles(skeleton, mesh, with_surface);
   const gs::Sheet_radii widest_sheet = gs::widest_sheet_radius_of_pieces(skeleton, sheet_radii);
+  const double tolerance = gs::default_coarse_end_point_tolerance(resolution, coarse_resolution);
   gs::prune_skeleton(
       skeleton,
       gs::parameters::combine(
           gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(distances)),
           gs::parameters::sheet_radius_map(gs::sheet_radius_in_voxels_map(sheet_radii)),
           gs::parameters::coarse_end_points(coarse ? &coarse->end_points : nullptr),
-          gs::parameters::coarse_end_point_tolerance(gs::default_coarse_end_point_tolerance(resolution, coarse_resolution))));
+          gs::parameters::coarse_end_point_tolerance(tolerance)));
+  // The limbs that the coarser skeleton ends in and this one lacks, grafted back.
+  if(coarse)
+    gs::graft_coarse_end_branches(skeleton, distances, coarse->end_points,
+                                  gs::parameters::coarse_end_point_tolerance(tolerance));
   Curve curve;
   gs::to_graph(skeleton, distances, mesh, curve, with_surface);
   gs::smooth_skeleton(curve, gs::parameters::smoothing_window(gs::default_smoothing_window(resolution)));

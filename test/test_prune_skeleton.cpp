@@ -10,6 +10,7 @@
 
 #include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
+#include <CGAL/Geodesic_skeleton/graft_coarse_end_branches.h>
 #include <CGAL/Geodesic_skeleton/thin.h>
 #include <CGAL/Geodesic_skeleton/to_graph.h>
 #include <CGAL/Geodesic_skeleton/voxelize.h>
@@ -26,6 +27,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <unordered_map>
 #include <vector>
@@ -924,6 +926,101 @@ BOOST_AUTO_TEST_CASE(pruning_leaves_no_more_branched_points_and_one_end_per_limb
     BOOST_TEST(s.pruned.end_points >= x.min_ends, x.mesh);
     BOOST_TEST(s.pruned.end_points <= x.max_ends, x.mesh);
   }
+}
+
+// A T of square bars 5 voxels thick: a crossbar along x (|x| <= 15, |y| <= 2) and a leg
+// along +y (|x| <= 2, 3 <= y <= 15), both |z| <= 2; and, with `island`, a cube apart.
+template <typename VoxelSet>
+VoxelSet t_shaped_solid(bool island)
+{
+  std::vector<Voxel_key> v;
+  for(int z = -2; z <= 2; ++z)
+    for(int y = -2; y <= 15; ++y)
+      for(int x = -15; x <= 15; ++x)
+        if(std::abs(y) <= 2 || std::abs(x) <= 2)
+          v.push_back(Voxel_key{x, y, z});
+  if(island)
+    for(int z = 10; z <= 14; ++z)
+      for(int y = -14; y <= -10; ++y)
+        for(int x = 10; x <= 14; ++x)
+          v.push_back(Voxel_key{x, y, z});
+  return voxel_set<VoxelSet>(v);
+}
+
+// Whether the voxels of `set` are one 26-connected piece.
+template <typename VoxelSet>
+bool is_one_piece(const VoxelSet& set)
+{
+  const std::set<Voxel_key> all = contents(set);
+  std::set<Voxel_key> seen{*all.begin()};
+  std::vector<Voxel_key> stack{*all.begin()};
+  while(!stack.empty())
+  {
+    const Voxel_key k = stack.back();
+    stack.pop_back();
+    for(const Voxel_key& o : gs::neighbourhood_26())
+      if(all.count(k + o) != 0 && seen.insert(k + o).second)
+        stack.push_back(k + o);
+  }
+  return seen.size() == all.size();
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(the_limb_the_coarser_skeleton_ends_in_is_grafted_along_the_middle, VoxelSet,
+                              Voxel_set_models)
+{
+  // The skeleton of the T's crossbar lacks the leg, which the coarser skeleton ends in: a
+  // branch is grafted from the coarse end point to the crossbar's chain, inside the solid
+  // and along the leg's axis, and the graph gets the coarser skeleton's three end points.
+  const VoxelSet solid = t_shaped_solid<VoxelSet>(true);
+  const gs::Voxel_distance_field distances = gs::distance_transform(solid);
+  std::vector<Voxel_key> crossbar;
+  add_segment(crossbar, Voxel_key{-12, 0, 0}, Voxel_key{1, 0, 0}, 25);
+  const std::vector<std::array<double, 3>> ends{{-11.5, 0.5, 0.5}, {12.5, 0.5, 0.5}, {0.5, 13.5, 0.5}};
+
+  VoxelSet skeleton = voxel_set<VoxelSet>(crossbar);
+  BOOST_TEST(gs::graft_coarse_end_branches(skeleton, distances, ends) == 1u);
+  BOOST_TEST(gs::internal::graph_end_points(skeleton).size() == 3u);
+  BOOST_TEST(skeleton.contains(Voxel_key{0, 13, 0})); // the voxel holding the coarse end point
+  BOOST_TEST(is_one_piece(skeleton));
+  std::size_t grafted = 0;
+  skeleton.for_each([&](const Voxel_key& k) {
+    BOOST_TEST(distances.inside(k));
+    if(k.y > 2) // on the leg: on its axis, not along a side
+    {
+      BOOST_TEST(std::abs(k.x) <= 1);
+      BOOST_TEST(std::abs(k.z) <= 1);
+      ++grafted;
+    }
+  });
+  BOOST_TEST(grafted >= 11u);
+  // Done once, nothing is left to graft.
+  BOOST_TEST(gs::graft_coarse_end_branches(skeleton, distances, ends) == 0u);
+
+  // As many end points as the coarser skeleton: nothing is grafted, even where it ends.
+  VoxelSet as_many = voxel_set<VoxelSet>(crossbar);
+  const std::vector<std::array<double, 3>> two_ends{{-11.5, 0.5, 0.5}, {0.5, 13.5, 0.5}};
+  BOOST_TEST(gs::graft_coarse_end_branches(as_many, distances, two_ends) == 0u);
+  BOOST_TEST(contents(as_many) == contents(voxel_set<VoxelSet>(crossbar)));
+
+  // A coarse end point that the skeleton passes near (within the tolerance, or the MAT
+  // radius there), outside the solid, or in a piece without skeleton gets no branch.
+  for(const std::array<double, 3>& lacked : {std::array<double, 3>{0.5, 3.5, 0.5}, std::array<double, 3>{10.5, 10.5, 0.5},
+                                             std::array<double, 3>{12.5, -11.5, 12.5}})
+  {
+    VoxelSet unchanged = voxel_set<VoxelSet>(crossbar);
+    BOOST_TEST(gs::graft_coarse_end_branches(unchanged, distances, {ends[0], ends[1], lacked}) == 0u);
+    BOOST_TEST(contents(unchanged) == contents(voxel_set<VoxelSet>(crossbar)));
+  }
+  // Within a larger tolerance, the crossbar passes near enough to the leg's end point.
+  VoxelSet tolerant = voxel_set<VoxelSet>(crossbar);
+  BOOST_TEST(gs::graft_coarse_end_branches(tolerant, distances, ends, gs::parameters::coarse_end_point_tolerance(14)) == 0u);
+
+  VoxelSet bad = voxel_set<VoxelSet>(crossbar);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  BOOST_CHECK_THROW(gs::graft_coarse_end_branches(bad, distances, {ends[0], ends[1], {0.5, nan, 0.5}}), std::invalid_argument);
+  BOOST_CHECK_THROW(gs::graft_coarse_end_branches(bad, distances, ends, gs::parameters::coarse_end_point_tolerance(-1)),
+                    std::invalid_argument);
+  BOOST_TEST(contents(bad) == contents(voxel_set<VoxelSet>(crossbar)));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -17,6 +17,7 @@
 #include <CGAL/Geodesic_skeleton/coarse_skeleton_end_points.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/geodesic_mapping_function.h>
+#include <CGAL/Geodesic_skeleton/graft_coarse_end_branches.h>
 #include <CGAL/Geodesic_skeleton/join_pieces_joined_on_coarser_grid.h>
 #include <CGAL/Geodesic_skeleton/move_skeleton_inside.h>
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
@@ -61,6 +62,7 @@ struct Control_skeleton_report
   std::size_t spurious_cycles_cut = 0; ///< cycles the mesh has no handle for, opened (`cut_spurious_cycles()`)
   Skeleton_statistics pruned;      ///< after pruning (Algorithm 1 and snipping)
   Pruning_report pruning;          ///< what pruning removed
+  std::size_t coarse_end_branches_grafted = 0; ///< end branches of the level of detail's skeleton that pruning's result lacked, grafted (`graft_coarse_end_branches()`)
   std::size_t curve_points_moved_inside = 0; ///< curve-skeleton points that lay outside the (closed) mesh and were moved in
   std::size_t joints_moved_inside = 0; ///< joints on those points: they moved in with them
   double smallest_radius = 0;      ///< the `smallest_radius` the split used, given or default (world units)
@@ -448,6 +450,9 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
 
   // The end branches that a finer grid resolves beyond the level of detail of the default
   // one are snipped as long as the skeleton has more end points than it has there.
+  const double coarse_tolerance =
+      coarse ? default_coarse_end_point_tolerance(report.resolution, report.level_of_detail_resolution)
+             : parameter_ranges::coarse_end_point_tolerance.default_value;
   report.pruning = prune_skeleton(
       skeleton,
       parameters::combine(
@@ -455,10 +460,11 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
           parameters::sheet_radius_map(sheet_radius_in_voxels_map(sheet_radii)),
           parameters::piece_radius_map(sheet_radius_in_voxels_map(widest_sheet_of_piece)),
           parameters::coarse_end_points(coarse ? &std::as_const(coarse->end_points) : nullptr),
-          parameters::coarse_end_point_tolerance(
-              coarse ? default_coarse_end_point_tolerance(report.resolution, report.level_of_detail_resolution)
-                     : parameter_ranges::coarse_end_point_tolerance.default_value),
-          np));
+          parameters::coarse_end_point_tolerance(coarse_tolerance), np));
+  // And the limbs that the finer grid's thinning did not make are grafted back.
+  if(coarse)
+    report.coarse_end_branches_grafted = graft_coarse_end_branches(
+        skeleton, distances, coarse->end_points, parameters::coarse_end_point_tolerance(coarse_tolerance));
   clock.finished("prune");
 
   Skeleton curve;

@@ -223,9 +223,7 @@ Pruning_report prune_skeleton(VoxelSet& skeleton,
       choose_parameter(get_parameter(np, internal_np::coarse_end_points_tag),
                        static_cast<const std::vector<std::array<double, 3>>*>(nullptr));
   if(coarse_points != nullptr)
-    for(const std::array<double, 3>& p : *coarse_points)
-      if(!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-        throw std::invalid_argument("prune_skeleton: a coarse end point has a non-finite coordinate");
+    internal::check_coarse_end_points_are_finite(*coarse_points, "prune_skeleton");
   const auto mat_radius_map = choose_parameter(get_parameter(np, internal_np::mat_radius_map_tag),
                                                CGAL::Constant_property_map<Voxel_key, double>(1.0));
   const auto sheet_radius_map = choose_parameter(get_parameter(np, internal_np::sheet_radius_map_tag),

@@ -13,13 +13,24 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <stdexcept>
+#include <string>
 #include <tuple>
 #include <vector>
 
 namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
+
+// Throws std::invalid_argument, naming `caller`, when a coarse end point is not finite.
+inline void check_coarse_end_points_are_finite(const std::vector<std::array<double, 3>>& points, const char* caller)
+{
+  for(const std::array<double, 3>& p : points)
+    if(!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+      throw std::invalid_argument(std::string(caller) + ": a coarse end point has a non-finite coordinate");
+}
 
 // The voxels of `skeleton` that are end points of its graph, the one to_graph() makes
 // (26-adjacency without junction triangles): the end points the control skeleton gets.
