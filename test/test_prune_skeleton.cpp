@@ -1015,6 +1015,24 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(the_limb_the_coarser_skeleton_ends_in_is_grafted_a
   VoxelSet tolerant = voxel_set<VoxelSet>(crossbar);
   BOOST_TEST(gs::graft_coarse_end_branches(tolerant, distances, ends, gs::parameters::coarse_end_point_tolerance(14)) == 0u);
 
+  // A coarse end point farther than the search's first window (33 voxels wide): the window
+  // grows, and the graft meeting the skeleton at its end carries that branch on along the
+  // bar's axis, without a new end point.
+  std::vector<Voxel_key> bar_voxels;
+  for(int z = -2; z <= 2; ++z)
+    for(int y = -2; y <= 2; ++y)
+      for(int x = -19; x <= 19; ++x)
+        bar_voxels.push_back(Voxel_key{x, y, z});
+  const gs::Voxel_distance_field bar = gs::distance_transform(voxel_set<VoxelSet>(bar_voxels));
+  std::vector<Voxel_key> stub;
+  add_segment(stub, Voxel_key{-17, 0, 0}, Voxel_key{1, 0, 0}, 3);
+  VoxelSet carried_on = voxel_set<VoxelSet>(stub);
+  const std::vector<std::array<double, 3>> bar_ends{{-16.5, 0.5, 0.5}, {-14.5, 0.5, 0.5}, {17.5, 0.5, 0.5}};
+  BOOST_TEST(gs::graft_coarse_end_branches(carried_on, bar, bar_ends) == 1u);
+  std::vector<Voxel_key> axis;
+  add_segment(axis, Voxel_key{-17, 0, 0}, Voxel_key{1, 0, 0}, 35);
+  BOOST_TEST(contents(carried_on) == contents(voxel_set<VoxelSet>(axis)));
+
   VoxelSet bad = voxel_set<VoxelSet>(crossbar);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   BOOST_CHECK_THROW(gs::graft_coarse_end_branches(bad, distances, {ends[0], ends[1], {0.5, nan, 0.5}}), std::invalid_argument);

@@ -123,11 +123,14 @@ std::size_t coarse_end_point_lacked_most(const VoxelSet& skeleton, const std::ve
 /// \throws std::invalid_argument when a coarse end point is not finite or
 ///         `coarse_end_point_tolerance` is out of range.
 ///
-/// \b Complexity: O(C (E + N C) + G V log V) for C coarse end points, N skeleton voxels,
-/// the E voxels that tracing the graph reads (O(N log N)) after each graft, and G grafts
-/// whose searches visit V solid voxels each: those cheaper to reach than the skeleton, at
-/// most the voxels of the piece. Nothing is done, beyond tracing the graph once, when the
-/// graph has as many end points as `coarse_end_points`.
+/// \b Complexity: O(C (N log N + N C) + G (V log V + W)) for C coarse end points and N
+/// skeleton voxels (the graph is traced, and every coarse end point compared with every
+/// skeleton voxel, once per try, of which there are at most C), and G searches, each of
+/// which visits the V solid voxels cheaper to reach than the skeleton (at most the voxels of
+/// the piece) and clears W voxels of arrays: a box around the coarse end point, 33 voxels
+/// wide and twice as wide each time the search reaches its side (at most the box of
+/// `distances`), 9 bytes per voxel. Nothing is done, beyond tracing the graph once, when
+/// the graph has as many end points as `coarse_end_points`.
 template <typename VoxelSet, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 std::size_t graft_coarse_end_branches(VoxelSet& skeleton, const Voxel_distance_field& distances,
                                       const std::vector<std::array<double, 3>>& coarse_end_points,

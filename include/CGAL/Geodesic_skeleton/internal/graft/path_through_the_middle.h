@@ -10,12 +10,14 @@
 #include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <queue>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -23,62 +25,115 @@ namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
 
+// The half width, in voxels, of the first window that the search is confined to; each
+// window that cannot settle the search has twice the half width of the last.
+constexpr int first_search_window_half_width = 16;
+
+// What a search confined to a window found: the path (see path_through_the_middle()), and
+// whether it is the answer of the unconfined search, i.e. the search ended before it took
+// a voxel of the window's rim (one with a neighbour in the field's box outside the window):
+// every path that leaves the window costs at least as much as that voxel.
+struct Window_search
+{
+  std::vector<Voxel_key> path;
+  bool settled = false;
+};
+
+// The search of path_through_the_middle() over the voxels of `window` only, with its
+// costs and the step each voxel was reached by in arrays over the window.
+template <typename IsGoal>
+Window_search search_in_window(const Voxel_distance_field& distances, const Voxel_key& start, const IsGoal& is_goal,
+                               const Voxel_box& window)
+{
+  const std::array<std::size_t, 3> extent = window.extent();
+  auto index = [&](const Voxel_key& k) {
+    return (std::size_t(k.z - window.min.z) * extent[1] + std::size_t(k.y - window.min.y)) * extent[0] +
+           std::size_t(k.x - window.min.x);
+  };
+  const Voxel_box field = distances.box();
+  auto on_rim = [&](const Voxel_key& k) {
+    return (k.x == window.min.x && k.x > field.min.x) || (k.x + 1 == window.max.x && k.x + 1 < field.max.x) ||
+           (k.y == window.min.y && k.y > field.min.y) || (k.y + 1 == window.max.y && k.y + 1 < field.max.y) ||
+           (k.z == window.min.z && k.z > field.min.z) || (k.z + 1 == window.max.z && k.z + 1 < field.max.z);
+  };
+  constexpr std::uint8_t unreached = 26;
+  const auto& offsets = neighbourhood_26();
+  std::vector<double> cost(window.volume(), std::numeric_limits<double>::infinity());
+  std::vector<std::uint8_t> step_in(window.volume(), unreached); // offset that reached the voxel
+  const std::array<double, 4> step_length{0.0, 1.0, std::sqrt(2.0), std::sqrt(3.0)};
+  using Queued = std::pair<double, Voxel_key>;
+  std::priority_queue<Queued, std::vector<Queued>, std::greater<Queued>> queue;
+  cost[index(start)] = 0.0;
+  queue.push({0.0, start});
+  Window_search found;
+  found.settled = true;
+  while(!queue.empty())
+  {
+    const auto [reached, k] = queue.top();
+    queue.pop();
+    if(reached > cost[index(k)])
+      continue; // reached more cheaply since it was queued
+    if(is_goal(k))
+    {
+      for(Voxel_key v = k; step_in[index(v)] != unreached;)
+      {
+        const Voxel_key& offset = offsets[step_in[index(v)]];
+        v = Voxel_key{v.x - offset.x, v.y - offset.y, v.z - offset.z};
+        found.path.push_back(v);
+      }
+      return found;
+    }
+    if(on_rim(k))
+      found.settled = false;
+    for(std::uint8_t o = 0; o < offsets.size(); ++o)
+    {
+      const Voxel_key next = k + offsets[o];
+      if(!window.contains(next))
+        continue;
+      const std::uint32_t squared_distance = distances.squared_distance(next);
+      if(squared_distance == 0)
+        continue; // outside the solid
+      // The MAT radius in voxels, as mat_radius_in_voxels_map() gives it: at least 1/2.
+      const double radius_in_voxels = std::sqrt(double(squared_distance)) - 0.5;
+      const double through_k = reached + step_length[offset_order(offsets[o])] / radius_in_voxels;
+      const std::size_t i = index(next);
+      if(through_k < cost[i])
+      {
+        cost[i] = through_k;
+        step_in[i] = o;
+        queue.push({through_k, next});
+      }
+    }
+  }
+  return found;
+}
+
 // The cheapest 26-connected path inside the solid of `distances` from `start` to the first
 // voxel that `is_goal` accepts, where a step costs its length over the MAT radius of the
 // voxel it enters: the path keeps to the middle of the solid, and its cost is a length in
 // MAT radii, the same on any grid. Returns the voxels of the path, `start` included and the
-// goal excluded; empty when `start` is a goal or no goal is reachable (then every voxel of
-// start's piece was visited).
+// goal excluded; empty when `start` is a goal or no goal is reachable. The search runs in a
+// window around `start`, twice as wide each time it cannot settle there, up to the field's
+// box: it reads the voxels cheaper to reach than the goal, and arrays as large as its last
+// window.
 template <typename IsGoal>
 std::vector<Voxel_key> path_through_the_middle(const Voxel_distance_field& distances, const Voxel_key& start,
                                                const IsGoal& is_goal)
 {
-  struct Visit
+  const Voxel_box field = distances.box();
+  if(!distances.inside(start))
+    return {};
+  for(int half_width = first_search_window_half_width;; half_width *= 2)
   {
-    double cost;
-    Voxel_key previous;
-  };
-  using Queued = std::pair<double, Voxel_key>;
-  std::priority_queue<Queued, std::vector<Queued>, std::greater<Queued>> queue;
-  std::unordered_map<Voxel_key, Visit, Voxel_key_hash> visits;
-  visits.reserve(1 << 12);
-  visits.emplace(start, Visit{0.0, start});
-  queue.push({0.0, start});
-  const std::array<double, 4> step_length{0.0, 1.0, std::sqrt(2.0), std::sqrt(3.0)};
-  while(!queue.empty())
-  {
-    const auto [cost, k] = queue.top();
-    queue.pop();
-    if(cost > visits.find(k)->second.cost)
-      continue; // reached more cheaply since it was queued
-    if(is_goal(k))
-    {
-      std::vector<Voxel_key> path;
-      if(k == start)
-        return path;
-      for(Voxel_key v = visits.find(k)->second.previous; v != start; v = visits.find(v)->second.previous)
-        path.push_back(v);
-      path.push_back(start);
-      return path;
-    }
-    for(const Voxel_key& offset : neighbourhood_26())
-    {
-      const Voxel_key next = k + offset;
-      const std::uint32_t squared_distance = distances.squared_distance(next);
-      if(squared_distance == 0)
-        continue; // outside
-      // The MAT radius in voxels, as mat_radius_in_voxels_map() gives it: at least 1/2.
-      const double radius_in_voxels = std::sqrt(double(squared_distance)) - 0.5;
-      const double reached = cost + step_length[offset_order(offset)] / radius_in_voxels;
-      const auto [visit, first] = visits.try_emplace(next, Visit{reached, k});
-      if(first || reached < visit->second.cost)
-      {
-        visit->second = Visit{reached, k};
-        queue.push({reached, next});
-      }
-    }
+    const Voxel_box window{
+        Voxel_key{(std::max)(field.min.x, start.x - half_width), (std::max)(field.min.y, start.y - half_width),
+                  (std::max)(field.min.z, start.z - half_width)},
+        Voxel_key{(std::min)(field.max.x, start.x + half_width + 1), (std::min)(field.max.y, start.y + half_width + 1),
+                  (std::min)(field.max.z, start.z + half_width + 1)}};
+    Window_search search = search_in_window(distances, start, is_goal, window);
+    if(search.settled)
+      return std::move(search.path);
   }
-  return {};
 }
 
 } // namespace internal
