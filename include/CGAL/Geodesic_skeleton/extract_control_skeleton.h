@@ -219,7 +219,10 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 /// encloses no volume there): the finer skeleton then keeps no more end points than the
 /// coarser one has, where its extra end branches are detail under 3 times the level of
 /// detail (the resolution is a sampling choice; which branches the rig has should not
-/// depend on it). The widest sheet of each piece of that skeleton is read at the nearest
+/// depend on it); after pruning, `graft_coarse_end_branches()` grafts back, along the middle
+/// of the solid, the limbs that the coarser skeleton ends in and that thinning on the finer
+/// grid left as stubs, while the finer skeleton has fewer end points (its time is part of
+/// the stage "prune"). The widest sheet of each piece of that skeleton is read at the nearest
 /// vertices of the curve skeleton (`coarse_piece_half_widths()`): the piece radius that
 /// `split_into_bones()` gets is at least that.
 ///
