@@ -1003,8 +1003,10 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(the_limb_the_coarser_skeleton_ends_in_is_grafted_a
   BOOST_TEST(contents(as_many) == contents(voxel_set<VoxelSet>(crossbar)));
 
   // A coarse end point that the skeleton passes near (within the tolerance, or the MAT
-  // radius there), outside the solid, or in a piece without skeleton gets no branch.
+  // radius there), outside the solid (near it, or beyond any grid), or in a piece without
+  // skeleton gets no branch.
   for(const std::array<double, 3>& lacked : {std::array<double, 3>{0.5, 3.5, 0.5}, std::array<double, 3>{10.5, 10.5, 0.5},
+                                             std::array<double, 3>{1e300, -1e300, 0.5},
                                              std::array<double, 3>{12.5, -11.5, 12.5}})
   {
     VoxelSet unchanged = voxel_set<VoxelSet>(crossbar);
