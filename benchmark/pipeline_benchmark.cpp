@@ -146,15 +146,14 @@ Pruning_counts pruning_counts(const Mesh& mesh, int resolution)
   c.regions = report_1.branched_regions;
   c.algorithm_1_branched = gs::count_skeleton_points(algorithm_1).branched_connection;
 
+  const double tolerance = gs::default_coarse_end_point_tolerance(resolution, gs::default_voxel_resolution);
   c.pruning = gs::prune_skeleton(
       skeleton, gs::parameters::combine(
                     radius, gs::parameters::coarse_end_points(coarse ? &std::as_const(coarse->end_points) : nullptr),
-                    gs::parameters::coarse_end_point_tolerance(
-                        gs::default_coarse_end_point_tolerance(resolution, gs::default_voxel_resolution))));
+                    gs::parameters::coarse_end_point_tolerance(tolerance)));
   if(coarse) // the limbs that the coarser skeleton ends in and this one lacks, grafted back
     gs::graft_coarse_end_branches(skeleton, distances, coarse->end_points,
-                                  gs::parameters::coarse_end_point_tolerance(gs::default_coarse_end_point_tolerance(
-                                      resolution, gs::default_voxel_resolution)));
+                                  gs::parameters::coarse_end_point_tolerance(tolerance));
   c.branched_after = gs::count_skeleton_points(skeleton).branched_connection;
   c.pruned = skeleton.size();
   return c;

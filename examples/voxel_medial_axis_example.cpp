@@ -112,6 +112,7 @@ int main(int argc, char* argv[])
     // 6. The paper's pruning; twigs are snipped by the MAT radius (in voxels), or in a
     //    thin sheet by its half width, and so are the branches inside the MAT balls of
     //    the rest of the skeleton; with coarse end points, the end branches they do not have.
+    const double tolerance = GS::default_coarse_end_point_tolerance(resolution, GS::default_voxel_resolution);
     const GS::Pruning_report pruning = GS::prune_skeleton(
         skeleton,
         GS::parameters::combine(
@@ -119,14 +120,12 @@ int main(int argc, char* argv[])
             GS::parameters::sheet_radius_map(GS::sheet_radius_in_voxels_map(sheet_radii)),
             GS::parameters::piece_radius_map(GS::sheet_radius_in_voxels_map(widest_sheet)),
             GS::parameters::coarse_end_points(coarse ? &coarse->end_points : nullptr),
-            GS::parameters::coarse_end_point_tolerance(
-                GS::default_coarse_end_point_tolerance(resolution, GS::default_voxel_resolution))));
+            GS::parameters::coarse_end_point_tolerance(tolerance)));
     //    The limbs that the coarser skeleton ends in and thinning left this one without (a
     //    leg thinned to a stub), grafted back along the middle of the solid.
     const std::size_t grafted =
         coarse ? GS::graft_coarse_end_branches(skeleton, distances, coarse->end_points,
-                                               GS::parameters::coarse_end_point_tolerance(
-                                                   GS::default_coarse_end_point_tolerance(resolution, GS::default_voxel_resolution)))
+                                               GS::parameters::coarse_end_point_tolerance(tolerance))
                : 0;
 
     // 7. The curve skeleton graph: points in the mesh's coordinates, radii, mesh vertices.

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -128,6 +129,13 @@ inline std::int64_t squared_distance_between(const Voxel_key& a, const Voxel_key
 {
   const std::int64_t dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
   return dx * dx + dy * dy + dz * dz;
+}
+
+// Length of a step to a 26-neighbour: 1, sqrt 2 or sqrt 3 (voxels).
+inline double step_length(const Voxel_key& a, const Voxel_key& b)
+{
+  static const double length[4] = {0.0, 1.0, std::sqrt(2.0), std::sqrt(3.0)};
+  return length[(a.x != b.x) + (a.y != b.y) + (a.z != b.z)];
 }
 
 } // namespace internal

@@ -52,10 +52,7 @@ std::size_t coarse_end_point_lacked_most(const VoxelSet& skeleton, const std::ve
   for(std::size_t c = 0; c < coarse.size(); ++c)
   {
     const Voxel_key voxel = voxel_holding(coarse[c]);
-    if(tried[c] || !distances.inside(voxel))
-      continue;
-    if(std::any_of(ends.begin(), ends.end(),
-                   [&](const Voxel_key& e) { return is_near(coarse[c], e, tolerance * tolerance); }))
+    if(tried[c] || !distances.inside(voxel) || has_end_near(ends, coarse[c], tolerance * tolerance))
       continue;
     double nearest = std::numeric_limits<double>::infinity();
     skeleton.for_each([&](const Voxel_key& k) {

@@ -60,7 +60,6 @@ Window_search search_in_window(const Voxel_distance_field& distances, const Voxe
   const auto& offsets = neighbourhood_26();
   std::vector<double> cost(window.volume(), std::numeric_limits<double>::infinity());
   std::vector<std::uint8_t> step_in(window.volume(), unreached); // offset that reached the voxel
-  const std::array<double, 4> step_length{0.0, 1.0, std::sqrt(2.0), std::sqrt(3.0)};
   using Queued = std::pair<double, Voxel_key>;
   std::priority_queue<Queued, std::vector<Queued>, std::greater<Queued>> queue;
   cost[index(start)] = 0.0;
@@ -95,7 +94,7 @@ Window_search search_in_window(const Voxel_distance_field& distances, const Voxe
         continue; // outside the solid
       // The MAT radius in voxels, as mat_radius_in_voxels_map() gives it: at least 1/2.
       const double radius_in_voxels = std::sqrt(double(squared_distance)) - 0.5;
-      const double through_k = reached + step_length[offset_order(offsets[o])] / radius_in_voxels;
+      const double through_k = reached + step_length(k, next) / radius_in_voxels;
       const std::size_t i = index(next);
       if(through_k < cost[i])
       {

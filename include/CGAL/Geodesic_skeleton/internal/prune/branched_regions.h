@@ -15,7 +15,6 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <tuple>
@@ -28,13 +27,6 @@ namespace Geodesic_skeleton {
 namespace internal {
 
 using Voxel_key_set = std::unordered_set<Voxel_key, Voxel_key_hash>;
-
-// Length of a step to a 26-neighbour: 1, sqrt 2 or sqrt 3 (voxels).
-inline double step_length(const Voxel_key& a, const Voxel_key& b)
-{
-  static const double length[4] = {0.0, 1.0, std::sqrt(2.0), std::sqrt(3.0)};
-  return length[(a.x != b.x) + (a.y != b.y) + (a.z != b.z)];
-}
 
 // Step (5): the region voxel nearest the mean of the region, ties broken by the largest
 // radius, then by the smallest key (the region is sorted).

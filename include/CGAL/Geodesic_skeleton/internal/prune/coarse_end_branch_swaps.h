@@ -118,7 +118,7 @@ std::size_t swap_in_coarse_end_branches(VoxelSet& skeleton, const std::vector<st
     const std::vector<Voxel_key> ends = graph_end_points(skeleton);
     std::vector<std::array<double, 3>> unmatched_coarse;
     for(const std::array<double, 3>& p : coarse)
-      if(std::none_of(ends.begin(), ends.end(), [&](const Voxel_key& e) { return is_near(p, e, squared_tolerance); }))
+      if(!has_end_near(ends, p, squared_tolerance))
         unmatched_coarse.push_back(p);
     if(unmatched_coarse.empty() || std::none_of(ends.begin(), ends.end(), unmatched) ||
        !swap_one_end_branch(skeleton, ends.size(), unmatched_coarse, squared_tolerance, snipped, tried, unmatched))

@@ -67,6 +67,14 @@ inline bool is_near_any(const std::vector<std::array<double, 3>>& points, const 
                      [&](const std::array<double, 3>& p) { return is_near(p, k, squared_tolerance); });
 }
 
+// Whether one of the voxels `ends` (the end points of a skeleton's graph) has its centre
+// within `squared_tolerance` of the coarse end point `p`: the skeleton has p's branch.
+inline bool has_end_near(const std::vector<Voxel_key>& ends, const std::array<double, 3>& p,
+                         double squared_tolerance)
+{
+  return std::any_of(ends.begin(), ends.end(), [&](const Voxel_key& e) { return is_near(p, e, squared_tolerance); });
+}
+
 // How much larger the snipping's thresholds are for an end branch that the coarser
 // skeleton does not have: 3 times the default level of detail (0.75 of the body's thickness)
 // is more than 2 thicknesses, more than the corner branches of a block reach out, and less
