@@ -154,6 +154,7 @@ Pruning_counts pruning_counts(const Mesh& mesh, int resolution)
   if(coarse) // the limbs that the coarser skeleton ends in and this one lacks, grafted back
     gs::graft_coarse_end_branches(skeleton, distances, coarse->end_points,
                                   gs::parameters::coarse_end_point_tolerance(tolerance));
+  gs::route_lone_paths_through_the_middle(skeleton, distances); // a lone path, without its detour
   c.branched_after = gs::count_skeleton_points(skeleton).branched_connection;
   c.pruned = skeleton.size();
   return c;

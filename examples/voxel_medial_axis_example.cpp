@@ -18,6 +18,7 @@
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
 #include <CGAL/Geodesic_skeleton/coarse_skeleton_end_points.h>
 #include <CGAL/Geodesic_skeleton/graft_coarse_end_branches.h>
+#include <CGAL/Geodesic_skeleton/route_lone_paths_through_the_middle.h>
 #include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/join_pieces_joined_on_coarser_grid.h>
@@ -127,6 +128,9 @@ int main(int argc, char* argv[])
         coarse ? GS::graft_coarse_end_branches(skeleton, distances, coarse->end_points,
                                                GS::parameters::coarse_end_point_tolerance(tolerance))
                : 0;
+    //    A piece that is a lone path keeps its ends, not a detour that thinning took between
+    //    them across a thick sheet: it runs through the middle of the solid.
+    const std::size_t routed = GS::route_lone_paths_through_the_middle(skeleton, distances);
 
     // 7. The curve skeleton graph: points in the mesh's coordinates, radii, mesh vertices.
     GS::Curve_skeleton<Point, vertex_descriptor> curve;
@@ -141,7 +145,7 @@ int main(int argc, char* argv[])
               << "spurious cycles cut: " << cut << "\n"
               << "pruning:             " << pruning.branched_regions << " branched regions, "
               << pruning.removed_branched_points << " branched points and " << pruning.snipped_points
-              << " twig points removed\n"
+              << " twig points removed, " << routed << " lone paths routed through the middle\n"
               << "curve skeleton:      " << shape.points << " points, " << shape.end_points << " ends, "
               << shape.junctions << " junctions, " << shape.cycles << " cycles\n";
     if(coarse)

@@ -383,6 +383,26 @@ BOOST_AUTO_TEST_CASE(a_finer_grid_keeps_the_limbs_of_the_default_one)
   BOOST_TEST(farthest_end_point_from(rigs.at_128, rigs.at_64) <= 4 * rigs.coarse.voxel_size);
 }
 
+// patch-01 is a height field that closing its holes makes a dome: a thick, flat part whose
+// medial surface is a sheet. At 64 thinning leaves a U across the sheet between the two
+// ends that pruning keeps, which the split cuts into two bones; at 128 a path straight
+// between them. Routed through the middle, the U is that straight path: one bone at both.
+BOOST_AUTO_TEST_CASE(a_thick_dome_gets_as_many_joints_at_both_resolutions)
+{
+  const Mesh dome = test::demo_mesh<Mesh>("patch-01.off");
+  const Rigs_at_64_and_128 rigs = rigs_at_64_and_128(dome);
+  BOOST_TEST(rigs.coarse.lone_paths_routed == 1u);
+  BOOST_TEST(rigs.coarse.pruned.end_points == 2u);
+  BOOST_TEST(rigs.coarse.pruned.junctions == 0u);
+  BOOST_TEST(num_vertices(rigs.at_64) == num_vertices(rigs.at_128));
+  BOOST_TEST(num_edges(rigs.at_64) == 1u);
+  Control with_detour;
+  gs::extract_control_skeleton(dome, with_detour, gs::parameters::lone_path_detour_factor(0.0));
+  BOOST_TEST(num_edges(with_detour) == 2u);
+  BOOST_CHECK_THROW(gs::extract_control_skeleton(dome, with_detour, gs::parameters::lone_path_detour_factor(-1.0)),
+                    std::invalid_argument);
+}
+
 // The elephant's ears are thin flaps: thinning leaves a bush of rim branches in each, which
 // the level of detail snips down to one chain per ear, so the rig has an end per leg, the
 // trunk and the ears, not 15 ends of which most are in the ears.
@@ -892,6 +912,8 @@ BOOST_AUTO_TEST_CASE(the_public_stages_composed_by_hand_give_the_same_skeleton)
                          gs::parameters::combine(gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(distances)),
                                                  gs::parameters::sheet_radius_map(gs::sheet_radius_in_voxels_map(sheet_radii)),
                                                  gs::parameters::piece_radius_map(gs::sheet_radius_in_voxels_map(widest_sheet))));
+      // A piece that is a lone path keeps its ends, not a detour thinning took between them.
+      gs::route_lone_paths_through_the_middle(skeleton, distances);
       Curve curve;
       gs::to_graph(skeleton, distances, mesh, curve, with_surface);
       gs::smooth_skeleton(curve);
@@ -966,6 +988,7 @@ BOOST_AUTO_TEST_CASE(the_stages_composed_by_hand_on_a_finer_grid_give_the_same_s
   if(coarse)
     gs::graft_coarse_end_branches(skeleton, distances, coarse->end_points,
                                   gs::parameters::coarse_end_point_tolerance(tolerance));
+  gs::route_lone_paths_through_the_middle(skeleton, distances);
   Curve curve;
   gs::to_graph(skeleton, distances, mesh, curve, with_surface);
   gs::smooth_skeleton(curve, gs::parameters::smoothing_window(gs::default_smoothing_window(resolution)));

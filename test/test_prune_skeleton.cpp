@@ -11,6 +11,7 @@
 #include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/graft_coarse_end_branches.h>
+#include <CGAL/Geodesic_skeleton/route_lone_paths_through_the_middle.h>
 #include <CGAL/Geodesic_skeleton/thin.h>
 #include <CGAL/Geodesic_skeleton/to_graph.h>
 #include <CGAL/Geodesic_skeleton/voxelize.h>
@@ -62,6 +63,15 @@ void add_segment(std::vector<Voxel_key>& v, Voxel_key from, Voxel_key step, int 
 {
   for(int i = 0; i < count; ++i)
     v.push_back(Voxel_key{from.x + i * step.x, from.y + i * step.y, from.z + i * step.z});
+}
+
+// Adds the voxels of the box from `min` to `max`, both corners included.
+void add_box(std::vector<Voxel_key>& v, Voxel_key min, Voxel_key max)
+{
+  for(int z = min.z; z <= max.z; ++z)
+    for(int y = min.y; y <= max.y; ++y)
+      for(int x = min.x; x <= max.x; ++x)
+        v.push_back(Voxel_key{x, y, z});
 }
 
 // Three arms (+x, -x, +y) of 7 voxels leaving a flat 3x3 cluster centred at the origin:
@@ -1021,10 +1031,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(the_limb_the_coarser_skeleton_ends_in_is_grafted_a
   // grows, and the graft meeting the skeleton at its end carries that branch on along the
   // bar's axis, without a new end point.
   std::vector<Voxel_key> bar_voxels;
-  for(int z = -2; z <= 2; ++z)
-    for(int y = -2; y <= 2; ++y)
-      for(int x = -19; x <= 19; ++x)
-        bar_voxels.push_back(Voxel_key{x, y, z});
+  add_box(bar_voxels, Voxel_key{-19, -2, -2}, Voxel_key{19, 2, 2});
   const gs::Voxel_distance_field bar = gs::distance_transform(voxel_set<VoxelSet>(bar_voxels));
   std::vector<Voxel_key> stub;
   add_segment(stub, Voxel_key{-17, 0, 0}, Voxel_key{1, 0, 0}, 3);
@@ -1041,6 +1048,104 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(the_limb_the_coarser_skeleton_ends_in_is_grafted_a
   BOOST_CHECK_THROW(gs::graft_coarse_end_branches(bad, distances, ends, gs::parameters::coarse_end_point_tolerance(-1)),
                     std::invalid_argument);
   BOOST_TEST(contents(bad) == contents(voxel_set<VoxelSet>(crossbar)));
+}
+
+// A slab 37 voxels wide and 9 thick, as a thick, flat part (a dome, a lens) is: its medial
+// surface is a sheet, the plane z = 0, on which thinning may leave any curve.
+std::vector<Voxel_key> slab_voxels()
+{
+  std::vector<Voxel_key> v;
+  add_box(v, Voxel_key{-18, -18, -4}, Voxel_key{18, 18, 4});
+  return v;
+}
+
+// A lone path on the slab's middle plane from (10, -3, 0) to (10, 3, 0) that detours as a
+// U to x = -15 and back.
+std::vector<Voxel_key> u_across_the_slab()
+{
+  std::vector<Voxel_key> u;
+  add_segment(u, Voxel_key{10, -3, 0}, Voxel_key{-1, 0, 0}, 25);
+  add_segment(u, Voxel_key{-15, -2, 0}, Voxel_key{0, 1, 0}, 5);
+  add_segment(u, Voxel_key{-14, 3, 0}, Voxel_key{1, 0, 0}, 25);
+  return u;
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(a_lone_path_that_detours_across_a_thick_sheet_is_routed_through_the_middle, VoxelSet,
+                              Voxel_set_models)
+{
+  const gs::Voxel_distance_field slab = gs::distance_transform(voxel_set<VoxelSet>(slab_voxels()));
+  const std::vector<Voxel_key> u = u_across_the_slab();
+
+  // The U costs 9.4 times the straight path between its ends along the middle plane (12.5
+  // and 1.33 MAT radii): it is replaced by that path, and the ends stay.
+  VoxelSet routed = voxel_set<VoxelSet>(u);
+  BOOST_TEST(gs::internal::graph_end_points(routed).size() == 2u);
+  BOOST_TEST(gs::route_lone_paths_through_the_middle(routed, slab) == 1u);
+  std::vector<Voxel_key> straight;
+  add_segment(straight, Voxel_key{10, -3, 0}, Voxel_key{0, 1, 0}, 7);
+  BOOST_TEST(contents(routed) == contents(voxel_set<VoxelSet>(straight)));
+  // Routed once, it is the path through the middle: nothing changes any more.
+  BOOST_TEST(gs::route_lone_paths_through_the_middle(routed, slab) == 0u);
+  BOOST_TEST(contents(routed) == contents(voxel_set<VoxelSet>(straight)));
+
+  // A factor larger than the detour, or 0, leaves the U.
+  for(const double factor : {0.0, 10.0})
+  {
+    VoxelSet kept = voxel_set<VoxelSet>(u);
+    BOOST_TEST(gs::route_lone_paths_through_the_middle(kept, slab, gs::parameters::lone_path_detour_factor(factor)) == 0u);
+    BOOST_TEST(contents(kept) == contents(voxel_set<VoxelSet>(u)));
+  }
+  // A factor just under the detour routes it.
+  VoxelSet routed_at_9 = voxel_set<VoxelSet>(u);
+  BOOST_TEST(gs::route_lone_paths_through_the_middle(routed_at_9, slab, gs::parameters::lone_path_detour_factor(9)) == 1u);
+
+  // With a branch, the U is no lone path: unchanged.
+  std::vector<Voxel_key> branched = u;
+  add_segment(branched, Voxel_key{0, -4, 0}, Voxel_key{0, -1, 0}, 8);
+  VoxelSet with_branch = voxel_set<VoxelSet>(branched);
+  BOOST_TEST(gs::route_lone_paths_through_the_middle(with_branch, slab) == 0u);
+  BOOST_TEST(contents(with_branch) == contents(voxel_set<VoxelSet>(branched)));
+
+  // A path through the middle that would touch another piece of the skeleton (here a
+  // crossing the whole thickness where it passes) would join the two: the U stays.
+  std::vector<Voxel_key> blocked = u;
+  add_segment(blocked, Voxel_key{10, 0, -4}, Voxel_key{0, 0, 1}, 9);
+  VoxelSet with_crossing = voxel_set<VoxelSet>(blocked);
+  gs::route_lone_paths_through_the_middle(with_crossing, slab);
+  for(const Voxel_key& k : u)
+    BOOST_TEST(with_crossing.contains(k));
+
+  // Along a bent part (a U-shaped tube), the path bends with the part: the straight segment
+  // between its ends leaves the solid, and the path stays, even at the factor 1.
+  std::vector<Voxel_key> tube_voxels;
+  add_box(tube_voxels, Voxel_key{-10, -6, -2}, Voxel_key{10, -2, 2});
+  add_box(tube_voxels, Voxel_key{-15, -6, -2}, Voxel_key{-11, 6, 2});
+  add_box(tube_voxels, Voxel_key{-10, 2, -2}, Voxel_key{10, 6, 2});
+  const gs::Voxel_distance_field tube = gs::distance_transform(voxel_set<VoxelSet>(tube_voxels));
+  std::vector<Voxel_key> bent;
+  add_segment(bent, Voxel_key{10, -4, 0}, Voxel_key{-1, 0, 0}, 23);
+  add_segment(bent, Voxel_key{-13, -3, 0}, Voxel_key{0, 1, 0}, 7);
+  add_segment(bent, Voxel_key{-12, 4, 0}, Voxel_key{1, 0, 0}, 23);
+  VoxelSet along_the_tube = voxel_set<VoxelSet>(bent);
+  BOOST_TEST(gs::internal::graph_end_points(along_the_tube).size() == 2u);
+  BOOST_TEST(gs::route_lone_paths_through_the_middle(along_the_tube, tube, gs::parameters::lone_path_detour_factor(1)) == 0u);
+  BOOST_TEST(contents(along_the_tube) == contents(voxel_set<VoxelSet>(bent)));
+
+  // Along a bar, a straight lone path is the path through the middle: unchanged.
+  std::vector<Voxel_key> bar_voxels;
+  add_box(bar_voxels, Voxel_key{-17, -2, -2}, Voxel_key{17, 2, 2});
+  const gs::Voxel_distance_field bar = gs::distance_transform(voxel_set<VoxelSet>(bar_voxels));
+  std::vector<Voxel_key> axis;
+  add_segment(axis, Voxel_key{-15, 0, 0}, Voxel_key{1, 0, 0}, 31);
+  VoxelSet along_the_bar = voxel_set<VoxelSet>(axis);
+  BOOST_TEST(gs::route_lone_paths_through_the_middle(along_the_bar, bar, gs::parameters::lone_path_detour_factor(1)) == 0u);
+  BOOST_TEST(contents(along_the_bar) == contents(voxel_set<VoxelSet>(axis)));
+
+  VoxelSet bad = voxel_set<VoxelSet>(u);
+  for(const double factor : {-1.0, 1001.0, std::numeric_limits<double>::quiet_NaN()})
+    BOOST_CHECK_THROW(gs::route_lone_paths_through_the_middle(bad, slab, gs::parameters::lone_path_detour_factor(factor)),
+                      std::invalid_argument);
+  BOOST_TEST(contents(bad) == contents(voxel_set<VoxelSet>(u)));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -42,6 +42,7 @@
 #include <CGAL/Geodesic_skeleton/prune_skeleton.h>
 #include <CGAL/Geodesic_skeleton/coarse_skeleton_end_points.h>
 #include <CGAL/Geodesic_skeleton/graft_coarse_end_branches.h>
+#include <CGAL/Geodesic_skeleton/route_lone_paths_through_the_middle.h>
 #include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
 #include <CGAL/Geodesic_skeleton/to_graph.h>
 #include <CGAL/Geodesic_skeleton/skeleton_statistics.h>

@@ -18,6 +18,7 @@
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/geodesic_mapping_function.h>
 #include <CGAL/Geodesic_skeleton/graft_coarse_end_branches.h>
+#include <CGAL/Geodesic_skeleton/route_lone_paths_through_the_middle.h>
 #include <CGAL/Geodesic_skeleton/join_pieces_joined_on_coarser_grid.h>
 #include <CGAL/Geodesic_skeleton/move_skeleton_inside.h>
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
@@ -63,6 +64,7 @@ struct Control_skeleton_report
   Skeleton_statistics pruned;      ///< after pruning (Algorithm 1 and snipping)
   Pruning_report pruning;          ///< what pruning removed
   std::size_t coarse_end_branches_grafted = 0; ///< end branches of the level of detail's skeleton that pruning's result lacked, grafted (`graft_coarse_end_branches()`)
+  std::size_t lone_paths_routed = 0; ///< pieces of the pruned skeleton that are a lone path, routed through the middle of the solid (`route_lone_paths_through_the_middle()`)
   std::size_t curve_points_moved_inside = 0; ///< curve-skeleton points that lay outside the (closed) mesh and were moved in
   std::size_t joints_moved_inside = 0; ///< joints on those points: they moved in with them
   double smallest_radius = 0;      ///< the `smallest_radius` the split used, given or default (world units)
@@ -153,6 +155,10 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
                     choose_parameter(get_parameter(np, internal_np::limb_protrusion_factor_tag),
                                      ranges::limb_protrusion_factor.default_value),
                     caller);
+  checked_parameter(ranges::lone_path_detour_factor,
+                    choose_parameter(get_parameter(np, internal_np::lone_path_detour_factor_tag),
+                                     ranges::lone_path_detour_factor.default_value),
+                    caller);
   checked_parameter(ranges::thin_part_radius,
                     choose_parameter(get_parameter(np, internal_np::thin_part_radius_tag),
                                      ranges::thin_part_radius.default_value),
@@ -222,7 +228,9 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 /// depend on it); after pruning, `graft_coarse_end_branches()` grafts back, along the middle
 /// of the solid, the limbs that the coarser skeleton ends in and that thinning on the finer
 /// grid left as stubs, while the finer skeleton has fewer end points (its time is part of
-/// the stage "prune"). The widest sheet of each piece of that skeleton is read at the nearest
+/// the stage "prune"). Last in that stage, on every grid, `route_lone_paths_through_the_middle()`
+/// routes a piece that is a lone path through the middle of the solid between its two end
+/// points where thinning left it a detour (a U across a thick sheet). The widest sheet of each piece of that skeleton is read at the nearest
 /// vertices of the curve skeleton (`coarse_piece_half_widths()`): the piece radius that
 /// `split_into_bones()` gets is at least that.
 ///
@@ -284,6 +292,11 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 ///     \cgalParamDescription{the setting of `prune_skeleton()`: the rig's level of detail}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{0.75}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{lone_path_detour_factor}
+///     \cgalParamDescription{the setting of `route_lone_paths_through_the_middle()`}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{2}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{level_of_detail_resolution}
 ///     \cgalParamDescription{the resolution whose skeleton's end points decide how many end
@@ -468,6 +481,8 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   if(coarse)
     report.coarse_end_branches_grafted = graft_coarse_end_branches(
         skeleton, distances, coarse->end_points, parameters::coarse_end_point_tolerance(coarse_tolerance));
+  // And a lone path keeps its ends but not a detour that thinning took between them.
+  report.lone_paths_routed = route_lone_paths_through_the_middle(skeleton, distances, np);
   clock.finished("prune");
 
   Skeleton curve;

@@ -10,7 +10,7 @@
 
 #include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
-#include <CGAL/Geodesic_skeleton/internal/graft/path_through_the_middle.h>
+#include <CGAL/Geodesic_skeleton/internal/path_through_the_middle.h>
 #include <CGAL/Geodesic_skeleton/internal/prune/coarse_end_points.h>
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>

@@ -79,6 +79,10 @@ inline constexpr Parameter_range limb_protrusion_factor{"limb_protrusion_factor"
 /// `prune_skeleton()`: how near the tip of an end branch, in voxels of the skeleton, an end
 /// point of the coarser skeleton must be for the coarser grid to have the branch.
 inline constexpr Parameter_range coarse_end_point_tolerance{"coarse_end_point_tolerance", 0, 1e6, 4, false, false};
+/// `route_lone_paths_through_the_middle()`: how many times as much as the straight segment
+/// between its ends a lone path must cost to be a detour, routed through the middle (0 turns
+/// this off).
+inline constexpr Parameter_range lone_path_detour_factor{"lone_path_detour_factor", 0, 1000, 2, false, false};
 /// `extract_control_skeleton()`: the resolution whose skeleton's end points decide which end
 /// branches a finer grid keeps (0, or at least the resolution, turns this off).
 inline constexpr Parameter_range level_of_detail_resolution{"level_of_detail_resolution", 0, 8192, 64, true, false};

@@ -34,6 +34,9 @@ CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(limb_protrusion_factor)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(coarse_end_points)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(coarse_end_point_tolerance)
 
+// route_lone_paths_through_the_middle
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(lone_path_detour_factor)
+
 // smooth_skeleton
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(smoothing_window)
 

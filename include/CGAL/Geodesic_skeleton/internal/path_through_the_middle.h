@@ -1,11 +1,11 @@
 // Copyright (c) 2026 The Geodesic_skeleton authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_GEODESIC_SKELETON_INTERNAL_GRAFT_PATH_THROUGH_THE_MIDDLE_H
-#define CGAL_GEODESIC_SKELETON_INTERNAL_GRAFT_PATH_THROUGH_THE_MIDDLE_H
+#ifndef CGAL_GEODESIC_SKELETON_INTERNAL_PATH_THROUGH_THE_MIDDLE_H
+#define CGAL_GEODESIC_SKELETON_INTERNAL_PATH_THROUGH_THE_MIDDLE_H
 
-// The path search of graft_coarse_end_branches()
-// (include/CGAL/Geodesic_skeleton/graft_coarse_end_branches.h): not part of the API.
+// The path search of graft_coarse_end_branches() and route_lone_paths_through_the_middle():
+// not part of the API.
 
 #include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
@@ -39,11 +39,48 @@ struct Window_search
   bool settled = false;
 };
 
+// The cost of a step of the search into voxel `next` inside the solid: its length over the
+// MAT radius of `next` in voxels, as mat_radius_in_voxels_map() gives it (at least 1/2).
+inline double step_cost_through_the_middle(const Voxel_distance_field& distances, const Voxel_key& from,
+                                           const Voxel_key& next)
+{
+  return step_length(from, next) / (std::sqrt(double(distances.squared_distance(next))) - 0.5);
+}
+
+// The cost of the 26-connected path `path` inside the solid, as the search counts it.
+inline double cost_through_the_middle(const Voxel_distance_field& distances, const std::vector<Voxel_key>& path)
+{
+  double cost = 0;
+  for(std::size_t i = 1; i < path.size(); ++i)
+    cost += step_cost_through_the_middle(distances, path[i - 1], path[i]);
+  return cost;
+}
+
+// What the search may know beyond its goal test: `estimate(k)`, a lower bound of the cost
+// from `k` to a goal that never drops by more than a step's cost along a step (A*'s
+// consistent estimate; 0 makes the search Dijkstra's), and `cost_limit`, the cost beyond
+// which no path is wanted.
+template <typename Estimate>
+struct Search_bounds
+{
+  Estimate estimate;
+  double cost_limit;
+};
+
+// Bounds that know nothing: Dijkstra's search, at any cost.
+inline auto no_search_bounds()
+{
+  auto zero = [](const Voxel_key&) { return 0.0; };
+  return Search_bounds<decltype(zero)>{zero, std::numeric_limits<double>::infinity()};
+}
+
 // The search of path_through_the_middle() over the voxels of `window` only, with its
-// costs and the step each voxel was reached by in arrays over the window.
-template <typename IsGoal>
+// costs and the step each voxel was reached by in arrays over the window. Voxels are taken
+// in order of their cost plus their estimate; the search gives up, settled, when that
+// passes the cost limit.
+template <typename IsGoal, typename Estimate>
 Window_search search_in_window(const Voxel_distance_field& distances, const Voxel_key& start, const IsGoal& is_goal,
-                               const Voxel_box& window)
+                               const Search_bounds<Estimate>& bounds, const Voxel_box& window)
 {
   const std::array<std::size_t, 3> extent = window.extent();
   auto index = [&](const Voxel_key& k) {
@@ -63,14 +100,17 @@ Window_search search_in_window(const Voxel_distance_field& distances, const Voxe
   using Queued = std::pair<double, Voxel_key>;
   std::priority_queue<Queued, std::vector<Queued>, std::greater<Queued>> queue;
   cost[index(start)] = 0.0;
-  queue.push({0.0, start});
+  queue.push({bounds.estimate(start), start});
   Window_search found;
   found.settled = true;
   while(!queue.empty())
   {
-    const auto [reached, k] = queue.top();
+    const auto [bound, k] = queue.top();
     queue.pop();
-    if(reached > cost[index(k)])
+    if(bound > bounds.cost_limit)
+      return found; // every path left costs more
+    const double reached = cost[index(k)];
+    if(bound > reached + bounds.estimate(k))
       continue; // reached more cheaply since it was queued
     if(is_goal(k))
     {
@@ -89,18 +129,15 @@ Window_search search_in_window(const Voxel_distance_field& distances, const Voxe
       const Voxel_key next = k + offsets[o];
       if(!window.contains(next))
         continue;
-      const std::uint32_t squared_distance = distances.squared_distance(next);
-      if(squared_distance == 0)
-        continue; // outside the solid
-      // The MAT radius in voxels, as mat_radius_in_voxels_map() gives it: at least 1/2.
-      const double radius_in_voxels = std::sqrt(double(squared_distance)) - 0.5;
-      const double through_k = reached + step_length(k, next) / radius_in_voxels;
+      if(!distances.inside(next))
+        continue;
+      const double through_k = reached + step_cost_through_the_middle(distances, k, next);
       const std::size_t i = index(next);
       if(through_k < cost[i])
       {
         cost[i] = through_k;
         step_in[i] = o;
-        queue.push({through_k, next});
+        queue.push({through_k + bounds.estimate(next), next});
       }
     }
   }
@@ -111,13 +148,14 @@ Window_search search_in_window(const Voxel_distance_field& distances, const Voxe
 // voxel that `is_goal` accepts, where a step costs its length over the MAT radius of the
 // voxel it enters: the path keeps to the middle of the solid, and its cost is a length in
 // MAT radii, the same on any grid. Returns the voxels of the path, `start` included and the
-// goal excluded; empty when `start` is a goal or no goal is reachable. The search runs in a
-// window around `start`, twice as wide each time it cannot settle there, up to the field's
-// box: it reads the voxels cheaper to reach than the goal, and arrays as large as its last
-// window.
-template <typename IsGoal>
+// goal excluded, from the goal's side; empty when `start` is a goal, when no goal is
+// reachable, or when every path to a goal costs more than `bounds.cost_limit`. The search
+// runs in a window around `start`, twice as wide each time it cannot settle there, up to
+// the field's box: it reads the voxels whose cost plus estimate is below the goal's (and the
+// limit), and arrays as large as its last window.
+template <typename IsGoal, typename Estimate>
 std::vector<Voxel_key> path_through_the_middle(const Voxel_distance_field& distances, const Voxel_key& start,
-                                               const IsGoal& is_goal)
+                                               const IsGoal& is_goal, const Search_bounds<Estimate>& bounds)
 {
   const Voxel_box field = distances.box();
   if(!distances.inside(start))
@@ -129,14 +167,21 @@ std::vector<Voxel_key> path_through_the_middle(const Voxel_distance_field& dista
                   (std::max)(field.min.z, start.z - half_width)},
         Voxel_key{(std::min)(field.max.x, start.x + half_width + 1), (std::min)(field.max.y, start.y + half_width + 1),
                   (std::min)(field.max.z, start.z + half_width + 1)}};
-    Window_search search = search_in_window(distances, start, is_goal, window);
+    Window_search search = search_in_window(distances, start, is_goal, bounds, window);
     if(search.settled)
       return std::move(search.path);
   }
+}
+
+template <typename IsGoal>
+std::vector<Voxel_key> path_through_the_middle(const Voxel_distance_field& distances, const Voxel_key& start,
+                                               const IsGoal& is_goal)
+{
+  return path_through_the_middle(distances, start, is_goal, no_search_bounds());
 }
 
 } // namespace internal
 } // namespace Geodesic_skeleton
 } // namespace CGAL
 
-#endif // CGAL_GEODESIC_SKELETON_INTERNAL_GRAFT_PATH_THROUGH_THE_MIDDLE_H
+#endif // CGAL_GEODESIC_SKELETON_INTERNAL_PATH_THROUGH_THE_MIDDLE_H
