@@ -228,11 +228,12 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 /// depend on it); after pruning, `graft_coarse_end_branches()` grafts back, along the middle
 /// of the solid, the limbs that the coarser skeleton ends in and that thinning on the finer
 /// grid left as stubs, while the finer skeleton has fewer end points (its time is part of
-/// the stage "prune"). Last in that stage, on every grid, `route_lone_paths_through_the_middle()`
-/// routes a piece that is a lone path through the middle of the solid between its two end
-/// points where thinning left it a detour (a U across a thick sheet). The widest sheet of each piece of that skeleton is read at the nearest
-/// vertices of the curve skeleton (`coarse_piece_half_widths()`): the piece radius that
-/// `split_into_bones()` gets is at least that.
+/// the stage "prune"). Last in that stage, on every grid,
+/// `route_lone_paths_through_the_middle()` routes a piece that is a lone path through the
+/// middle of the solid between its two end points where thinning left it a detour (a U
+/// across a thick sheet). The widest sheet of each piece of the coarser skeleton is read at
+/// the nearest vertices of the curve skeleton (`coarse_piece_half_widths()`): the piece
+/// radius that `split_into_bones()` gets is at least that.
 ///
 /// Between `smooth_skeleton()` and `split_into_bones()`, `move_skeleton_inside()`: when the
 /// mesh is a closed triangle mesh, a point of the curve skeleton that lies outside it

@@ -165,7 +165,7 @@ std::size_t route_lone_paths_through_the_middle(VoxelSet& skeleton, const Voxel_
       "route_lone_paths_through_the_middle");
   if(detour_factor == 0)
     return 0;
-  const double largest_radius = std::sqrt(double(distances.max_squared_distance())) - 0.5;
+  const double largest_radius = internal::mat_radius_in_voxels(distances.max_squared_distance());
   std::size_t routed = 0;
   for(const std::vector<Voxel_key>& path : internal::lone_paths(skeleton))
   {

@@ -39,12 +39,19 @@ struct Window_search
   bool settled = false;
 };
 
+// The MAT radius in voxels of a voxel inside the solid whose squared distance transform is
+// `squared_distance`, as mat_radius_in_voxels_map() gives it: at least 1/2.
+inline double mat_radius_in_voxels(std::uint32_t squared_distance)
+{
+  return std::sqrt(double(squared_distance)) - 0.5;
+}
+
 // The cost of a step of the search into voxel `next` inside the solid: its length over the
-// MAT radius of `next` in voxels, as mat_radius_in_voxels_map() gives it (at least 1/2).
+// MAT radius of `next` in voxels.
 inline double step_cost_through_the_middle(const Voxel_distance_field& distances, const Voxel_key& from,
                                            const Voxel_key& next)
 {
-  return step_length(from, next) / (std::sqrt(double(distances.squared_distance(next))) - 0.5);
+  return step_length(from, next) / mat_radius_in_voxels(distances.squared_distance(next));
 }
 
 // The cost of the 26-connected path `path` inside the solid, as the search counts it.
@@ -127,9 +134,7 @@ Window_search search_in_window(const Voxel_distance_field& distances, const Voxe
     for(std::uint8_t o = 0; o < offsets.size(); ++o)
     {
       const Voxel_key next = k + offsets[o];
-      if(!window.contains(next))
-        continue;
-      if(!distances.inside(next))
+      if(!window.contains(next) || !distances.inside(next))
         continue;
       const double through_k = reached + step_cost_through_the_middle(distances, k, next);
       const std::size_t i = index(next);
