@@ -83,6 +83,8 @@ struct Options
   double minimum_bone_length_factor = ranges::minimum_bone_length_factor.default_value;
   double maximum_bone_length_factor = ranges::maximum_bone_length_factor.default_value;
   double minimum_bone_length_of_piece_factor = ranges::minimum_bone_length_of_piece_factor.default_value;
+  double tip_joint_setback = ranges::tip_joint_setback.default_value;
+  double joint_spacing_factor = ranges::joint_spacing_factor.default_value;
   std::optional<double> smallest_radius; // world units; none: extract_control_skeleton()'s default
   std::size_t reeb_intervals = static_cast<std::size_t>(ranges::number_of_reeb_intervals.default_value);
   bool fill_holes = true;
@@ -127,6 +129,10 @@ const Numeric_option numeric_options[] = {
      "longest straight bone in MAT radii, cut at its narrowings (0: no limit)"},
     {"--min-bone-length-of-piece", "F", ranges::minimum_bone_length_of_piece_factor,
      "level of detail: every bone is longer than F largest MAT radii of its piece"},
+    {"--tip-setback", "F", ranges::tip_joint_setback,
+     "a tip's joint sits F lengths of its bone back from the tip, where artists end a chain"},
+    {"--joint-spacing", "F", ranges::joint_spacing_factor,
+     "bones are cut into lengths of about F times the mesh's longest extent (0: not cut)"},
     {"--smallest-radius", "R", ranges::smallest_radius,
      "the split counts radii under R (world units) as R: thin parts get few joints",
      "the longest principal extent / 128"},
@@ -268,6 +274,8 @@ Options parse_options(int argc, char** argv)
     else if(a == "--max-bone-length") o.maximum_bone_length_factor = parse_number<double>(a, value());
     else if(a == "--min-bone-length-of-piece")
       o.minimum_bone_length_of_piece_factor = parse_number<double>(a, value());
+    else if(a == "--tip-setback") o.tip_joint_setback = parse_number<double>(a, value());
+    else if(a == "--joint-spacing") o.joint_spacing_factor = parse_number<double>(a, value());
     else if(a == "--smallest-radius") o.smallest_radius = parse_number<double>(a, value());
     else if(a == "--reeb-intervals") o.reeb_intervals = parse_number<std::size_t>(a, value());
     else if(a == "--skeleton") o.skeleton = value();
@@ -539,6 +547,7 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
         params::minimum_bone_length_factor(o.minimum_bone_length_factor),
         params::maximum_bone_length_factor(o.maximum_bone_length_factor),
         params::minimum_bone_length_of_piece_factor(o.minimum_bone_length_of_piece_factor),
+        params::tip_joint_setback(o.tip_joint_setback), params::joint_spacing_factor(o.joint_spacing_factor),
         params::number_of_reeb_intervals(o.reeb_intervals), params::curve_skeleton_output(&curve),
         params::thinned_skeleton_output(thinned_graph ? &thinned : nullptr),
         params::reeb_graph_output(o.reeb_graph ? &reeb : nullptr));
@@ -617,6 +626,8 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
                         {"minimum_bone_length_factor", o.minimum_bone_length_factor},
                         {"maximum_bone_length_factor", o.maximum_bone_length_factor},
                         {"minimum_bone_length_of_piece_factor", o.minimum_bone_length_of_piece_factor},
+                        {"tip_joint_setback", report.tip_joint_setback},
+                        {"joint_spacing", report.joint_spacing},
                         {"smallest_radius", report.smallest_radius},
                         {"reeb_intervals", o.reeb_intervals}, {"voxel_size", report.voxel_size}}},
         {"computed", computed},

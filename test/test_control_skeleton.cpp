@@ -726,6 +726,82 @@ BOOST_AUTO_TEST_CASE(every_voxel_of_a_piece_gets_its_widest_sheet)
     BOOST_TEST(widest.at(k) == 0.0);
 }
 
+// Artists end a chain short of the tip (the wrist, the head joint, the last tail joint): a
+// tip's joint is set back along its bone by tip_joint_setback of the bone's length, onto a
+// point of the skeleton, and the bone ends there.
+BOOST_AUTO_TEST_CASE(a_tip_joint_is_set_back_along_its_bone)
+{
+  // A T: a trunk along x with a limb 20 long up from its middle, radius 1, points 0.5 apart.
+  Skeleton t;
+  const auto trunk = add_chain(t, polyline({Point(-20, 0, 0), Point(20, 0, 0)}, 0.5), 1.0);
+  add_chain(t, polyline({Point(0, 0, 0.5), Point(0, 0, 20)}, 0.5), 1.0, long(trunk[40]));
+  const auto options = gs::parameters::combine(paper_split, gs::parameters::minimum_bone_length_factor(0.0));
+  const Control at_tips = bones_of(t, options);
+  const Control set_back = bones_of(t, gs::parameters::combine(gs::parameters::tip_joint_setback(0.25), options));
+  check_tree(set_back);
+  BOOST_TEST(num_vertices(set_back) == num_vertices(at_tips));
+  BOOST_TEST(num_edges(set_back) == num_edges(at_tips));
+  std::vector<Point> tips;
+  for(const auto j : boost::make_iterator_range(vertices(set_back)))
+  {
+    if(set_back[j].kind != gs::Joint_kind::end)
+      continue;
+    tips.push_back(set_back[j].point);
+    // The joint sits on a skeleton vertex, with its radius, and its bone ends there.
+    BOOST_TEST(set_back[j].point == t[set_back[j].skeleton_vertex].point);
+    BOOST_TEST(set_back[gs::bone_to(j, set_back)].points.back() == set_back[j].point);
+  }
+  // Each bone of the trunk is 20 long and the limb 20: each tip moves 5 back.
+  std::sort(tips.begin(), tips.end());
+  BOOST_REQUIRE(tips.size() == 3u);
+  BOOST_TEST(tips[0].x() == -15.0, boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(tips[1].z() == 15.0, boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(tips[2].x() == 15.0, boost::test_tools::tolerance(1e-9));
+
+  // A lone bone with two tips is set back from both ends alike.
+  const Control lone =
+      bones_of(chain_skeleton(polyline({Point(0, 0, 0), Point(0, 0, 30)}, 0.5), 1.0),
+               gs::parameters::combine(gs::parameters::tip_joint_setback(0.2), options));
+  BOOST_REQUIRE(num_edges(lone) == 1u);
+  std::vector<double> heights;
+  for(const auto& j : test::joints(lone))
+    heights.push_back(j.point.z());
+  std::sort(heights.begin(), heights.end());
+  BOOST_TEST(heights[0] == 6.0, boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(heights[1] == 24.0, boost::test_tools::tolerance(1e-9));
+
+  // A loop has no tip: nothing moves.
+  Skeleton loop;
+  std::vector<Point> ring;
+  for(int k = 0; k < 60; ++k)
+    ring.emplace_back(10 * std::cos(2 * pi * k / 60), 10 * std::sin(2 * pi * k / 60), 0);
+  const auto ids = add_chain(loop, ring, 1.0);
+  add_edge(ids.back(), ids.front(), loop);
+  const Control closed = bones_of(loop, gs::parameters::tip_joint_setback(0.4));
+  BOOST_TEST(num_vertices(closed) == num_vertices(bones_of(loop)));
+}
+
+// Artists space joints along a spine or a straight limb: with a joint_spacing, each bone is
+// cut into the whole number of bones nearest its length over the spacing, of equal length.
+BOOST_AUTO_TEST_CASE(bones_are_cut_at_the_joint_spacing)
+{
+  const Skeleton s = chain_skeleton(polyline({Point(0, 0, 0), Point(0, 0, 30)}, 0.5), 1.0);
+  const auto options = gs::parameters::combine(paper_split, gs::parameters::minimum_bone_length_factor(0.0));
+  BOOST_TEST(num_edges(bones_of(s, options)) == 1u);
+  for(const auto& [spacing, bones] : std::vector<std::pair<double, std::size_t>>{{10, 3}, {7, 4}, {8.4, 4}, {40, 1}, {0, 1}})
+  {
+    const Control c = bones_of(s, gs::parameters::combine(gs::parameters::joint_spacing(spacing), options));
+    check_tree(c);
+    BOOST_TEST(num_edges(c) == bones);
+    for(const auto bone : boost::make_iterator_range(edges(c)))
+      BOOST_TEST(c[bone].length == 30.0 / double(bones), boost::test_tools::tolerance(0.5 / 30.0));
+  }
+  // With a set-back tip, the spacing cuts the bones as they are after the set-back.
+  const Control both = bones_of(s, gs::parameters::combine(gs::parameters::joint_spacing(9.0),
+                                                           gs::parameters::tip_joint_setback(0.2), options));
+  BOOST_TEST(num_edges(both) == 2u); // 18 long: 2 bones of 9
+}
+
 BOOST_AUTO_TEST_CASE(bad_parameters_throw)
 {
   const Skeleton s = chain_skeleton(polyline({Point(0, 0, 0), Point(0, 0, 30)}, 0.5), 2.0);
@@ -733,6 +809,10 @@ BOOST_AUTO_TEST_CASE(bad_parameters_throw)
   BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::bend_threshold(-0.1)), std::invalid_argument);
   BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::straightness_tolerance(std::nan(""))), std::invalid_argument);
   BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::maximum_bone_length_factor(-1.0)), std::invalid_argument);
+  for(double bad : {-0.1, 0.5, std::nan("")})
+    BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::tip_joint_setback(bad)), std::invalid_argument);
+  for(double bad : {-1.0, std::nan("")})
+    BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::joint_spacing(bad)), std::invalid_argument);
   BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::smallest_radius(-1.0)), std::invalid_argument);
   BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::smallest_radius(std::nan(""))), std::invalid_argument);
   BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::minimum_bone_length_of_piece_factor(-1.0)),
@@ -1020,17 +1100,22 @@ BOOST_AUTO_TEST_CASE(default_maps_given_explicitly_change_nothing_and_doubled_ra
   const Mesh cow = test::demo_mesh<Mesh>("cow.off");
   Control extracted;
   Mesh_skeleton curve;
-  gs::extract_control_skeleton(cow, extracted, gs::parameters::curve_skeleton_output(&curve));
+  const gs::Control_skeleton_report report =
+      gs::extract_control_skeleton(cow, extracted, gs::parameters::curve_skeleton_output(&curve));
   const std::size_t n = num_vertices(curve);
   BOOST_REQUIRE(n > 50u);
 
   // split_into_bones: the chain's own call, the call without maps and with the default
   // maps named give the same control skeleton.
+  // The chain's settings of where joints go (not maps): its set-back and spacing.
+  const auto placement = gs::parameters::combine(gs::parameters::tip_joint_setback(report.tip_joint_setback),
+                                                 gs::parameters::joint_spacing(report.joint_spacing));
   Control by_default, with_maps;
-  gs::split_into_bones(curve, by_default);
+  gs::split_into_bones(curve, by_default, placement);
   gs::split_into_bones(curve, with_maps,
                        gs::parameters::combine(gs::parameters::vertex_point_map(get(&Vertex::point, std::as_const(curve))),
-                                               gs::parameters::mat_radius_map(get(&Vertex::radius, std::as_const(curve)))));
+                                               gs::parameters::mat_radius_map(get(&Vertex::radius, std::as_const(curve))),
+                                               placement));
   BOOST_TEST(num_vertices(by_default) > 10u);
   BOOST_TEST(identical(by_default, extracted));
   BOOST_TEST(identical(by_default, with_maps));
@@ -1055,12 +1140,14 @@ BOOST_AUTO_TEST_CASE(default_maps_given_explicitly_change_nothing_and_doubled_ra
   std::vector<double> doubled(n);
   for(std::size_t v = 0; v < n; ++v)
     doubled[v] = 2 * curve[v].radius;
-  Control twice;
+  // (Joints at the tips: a set-back tip moves with its bone, whose length the radii change.)
+  Control twice, at_tips;
   gs::split_into_bones(curve, twice, gs::parameters::mat_radius_map(CGAL::make_property_map(doubled)));
+  gs::split_into_bones(curve, at_tips);
   check_tree(twice);
-  BOOST_TEST(!identical(twice, by_default));
+  BOOST_TEST(!identical(twice, at_tips));
   std::map<std::size_t, double> node_radius;
-  for(const auto& j : test::joints(by_default))
+  for(const auto& j : test::joints(at_tips))
     if(j.kind != gs::Joint_kind::bend)
       node_radius[j.skeleton_vertex] = j.radius;
   std::size_t nodes = 0;
@@ -1075,7 +1162,7 @@ BOOST_AUTO_TEST_CASE(default_maps_given_explicitly_change_nothing_and_doubled_ra
     BOOST_TEST(j.radius > 0.0);
   }
   BOOST_TEST(nodes == node_radius.size());
-  BOOST_TEST_MESSAGE("cow: " << num_vertices(by_default) << " joints, " << num_vertices(twice)
+  BOOST_TEST_MESSAGE("cow: " << num_vertices(at_tips) << " joints, " << num_vertices(twice)
                              << " with the radii doubled");
 }
 

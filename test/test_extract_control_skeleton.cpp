@@ -260,8 +260,13 @@ BOOST_AUTO_TEST_CASE(a_rig_keeps_its_size_when_the_resolution_doubles)
     {
       const Mesh mesh = test::demo_mesh<Mesh>(name);
       Control at_64, at_128;
-      gs::extract_control_skeleton(mesh, at_64, gs::parameters::resolution(64));
-      gs::extract_control_skeleton(mesh, at_128, gs::parameters::resolution(128));
+      // The joints of the split, without the spacing's: the spacing gives each chain joints in
+      // proportion to its length, so a chain that one grid keeps and the other not (a finger
+      // of the hand at 128) changes the count by a chain's worth, and the two grids' chains
+      // of ALSTOM_TEST4 differ in length (10 and 14 joints with the spacing, 7 and 7 without).
+      const auto split_only = gs::parameters::joint_spacing_factor(0.0);
+      gs::extract_control_skeleton(mesh, at_64, gs::parameters::combine(gs::parameters::resolution(64), split_only));
+      gs::extract_control_skeleton(mesh, at_128, gs::parameters::combine(gs::parameters::resolution(128), split_only));
       const double ratio = double(num_vertices(at_128)) / double(num_vertices(at_64));
       BOOST_TEST(ratio >= 0.75);
       BOOST_TEST(ratio <= 1.25);
@@ -397,7 +402,10 @@ BOOST_AUTO_TEST_CASE(a_thick_dome_gets_as_many_joints_at_both_resolutions)
   BOOST_TEST(num_vertices(rigs.at_64) == num_vertices(rigs.at_128));
   BOOST_TEST(num_edges(rigs.at_64) == 1u);
   Control with_detour;
-  gs::extract_control_skeleton(dome, with_detour, gs::parameters::lone_path_detour_factor(0.0));
+  // The split's own bones (the spacing would cut the long U into more).
+  gs::extract_control_skeleton(dome, with_detour,
+                               gs::parameters::combine(gs::parameters::lone_path_detour_factor(0.0),
+                                                       gs::parameters::joint_spacing_factor(0.0)));
   BOOST_TEST(num_edges(with_detour) == 2u);
   BOOST_CHECK_THROW(gs::extract_control_skeleton(dome, with_detour, gs::parameters::lone_path_detour_factor(-1.0)),
                     std::invalid_argument);
@@ -631,9 +639,12 @@ BOOST_AUTO_TEST_CASE(a_shape_with_nearly_equal_principal_axes_keeps_its_joints_u
   const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(star);
   const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
                                     CGAL::square(box.zmax() - box.zmin()));
+  // The joint spacing is off: the arms, about 0.44 long, are 3.5 spacings long, where a voxel
+  // more or less (which the turned grid's rasterisation gives) decides between 3 and 4 bones.
   auto joints_and_ends = [](const Mesh& mesh, int resolution, std::size_t& ends) {
     Control c;
-    gs::extract_control_skeleton(mesh, c, gs::parameters::resolution(resolution));
+    gs::extract_control_skeleton(
+        mesh, c, gs::parameters::combine(gs::parameters::resolution(resolution), gs::parameters::joint_spacing_factor(0.0)));
     std::vector<Point> points;
     ends = 0;
     for(const auto v : boost::make_iterator_range(vertices(c)))
@@ -923,10 +934,14 @@ BOOST_AUTO_TEST_CASE(the_public_stages_composed_by_hand_give_the_same_skeleton)
       const double voxel_size = solid.frame().voxel_size();
       const std::vector<double> sheet_widths = gs::sheet_half_widths(curve, sheet_radii, voxel_size);
       const std::vector<double> piece_widths = gs::sheet_half_widths(curve, widest_sheet, voxel_size);
+      // Chains end short of the tips, and long bones get joints a tenth of the shape apart.
       Control composed;
-      gs::split_into_bones(curve, composed,
-                           gs::parameters::combine(gs::parameters::sheet_half_width_map(CGAL::make_property_map(sheet_widths)),
-                                                   gs::parameters::piece_radius_map(CGAL::make_property_map(piece_widths))));
+      gs::split_into_bones(
+          curve, composed,
+          gs::parameters::combine(gs::parameters::sheet_half_width_map(CGAL::make_property_map(sheet_widths)),
+                                  gs::parameters::piece_radius_map(CGAL::make_property_map(piece_widths)),
+                                  gs::parameters::tip_joint_setback(0.3),
+                                  gs::parameters::joint_spacing(gs::default_joint_spacing(voxel_size, gs::default_voxel_resolution))));
       //! [composed_chain]
 
       BOOST_TEST(cut == r.spurious_cycles_cut);
@@ -1003,16 +1018,21 @@ BOOST_AUTO_TEST_CASE(the_stages_composed_by_hand_on_a_finer_grid_give_the_same_s
       piece_widths[v] = (std::max)(piece_widths[v], coarse_widths[v]);
   }
   // Parts thinner than half a voxel of the default grid get the joints of parts that thick.
+  // Chains end short of the tips, and long bones get joints a tenth of the shape apart.
   Control composed;
   gs::split_into_bones(curve, composed,
                        gs::parameters::combine(gs::parameters::smallest_radius(gs::default_smallest_radius(voxel_size, resolution)),
                                                gs::parameters::sheet_half_width_map(CGAL::make_property_map(sheet_widths)),
-                                               gs::parameters::piece_radius_map(CGAL::make_property_map(piece_widths))));
+                                               gs::parameters::piece_radius_map(CGAL::make_property_map(piece_widths)),
+                                               gs::parameters::tip_joint_setback(0.3),
+                                               gs::parameters::joint_spacing(gs::default_joint_spacing(voxel_size, resolution))));
   //! [composed_chain_on_a_finer_grid]
 
   BOOST_TEST(r.level_of_detail_resolution == coarse_resolution);
   BOOST_TEST(r.smallest_radius == gs::default_smallest_radius(voxel_size, resolution));
   BOOST_TEST(r.smallest_radius == voxel_size); // half a voxel of a grid half as fine
+  BOOST_TEST(r.tip_joint_setback == 0.3);
+  BOOST_TEST(r.joint_spacing == gs::default_joint_spacing(voxel_size, resolution));
   BOOST_TEST(r.pruning.swapped_for_coarse_end_branches + r.pruning.cut_back_branches > 0u);
   check_same_curve_and_rig(curve, expected_curve, composed, expected);
 }

@@ -13,6 +13,7 @@
 #include <Geodesic_skeleton_test/characters.h>
 #include <Geodesic_skeleton_test/joints.h>
 #include <Geodesic_skeleton_test/shapes.h>
+#include <Geodesic_skeleton_test/voxel_skeleton.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -129,10 +130,12 @@ double distance_to_character(const Point& p, const std::vector<Piece>& pieces)
 }
 
 // Whether some end joint lies within `tolerance` of `tip`.
-bool an_end_reaches(const Control& c, const Vec& tip, double tolerance)
+// Whether an end point of the curve skeleton lies within `tolerance` of `tip`: the limb has
+// a chain (the rig's end joint sits back from the tip, where artists end a chain).
+bool an_end_reaches(const Curve& c, const Vec& tip, double tolerance)
 {
-  for(const auto& j : test::joints(c))
-    if(j.kind == gs::Joint_kind::end && distance_to_segment(vec(j.point), Piece{tip, tip, 0}) <= tolerance)
+  for(std::size_t v = 0; v < num_vertices(c); ++v)
+    if(degree(v, c) == 1 && distance_to_segment(vec(c[v].point), Piece{tip, tip, 0}) <= tolerance)
       return true;
   return false;
 }
@@ -175,7 +178,7 @@ BOOST_AUTO_TEST_CASE(a_character_gets_one_connected_skeleton)
   }
   // Every limb reached to its tip (hands and feet), within its radius and two voxels.
   for(const Vec& tip : {Vec{0.9, 0, 1.25}, Vec{-0.9, 0, 1.25}, Vec{0.22, 0, 0.08}, Vec{-0.22, 0, 0.08}})
-    BOOST_TEST(an_end_reaches(control, tip, 0.1 + 2 * report.voxel_size));
+    BOOST_TEST(an_end_reaches(curve, tip, 0.1 + 2 * report.voxel_size));
 
   // Every mesh vertex, the bobble's too, maps to exactly one curve-skeleton vertex.
   std::size_t mapped = 0;
@@ -233,7 +236,9 @@ BOOST_AUTO_TEST_CASE(a_thin_plate_with_a_ragged_rim_gets_one_chain)
   }
   const Mesh mesh = test::mesh_of<Mesh>(s);
   Control control;
-  const gs::Control_skeleton_report report = gs::extract_control_skeleton(mesh, control);
+  // The chain to its tips: a plate's chain, set back, would span less of it.
+  const gs::Control_skeleton_report report =
+      gs::extract_control_skeleton(mesh, control, params::tip_joint_setback(0.0));
   BOOST_TEST_MESSAGE("ragged plate: " << report.thinned.end_points << " ends after thinning, "
                                       << report.pruned.end_points << " after pruning");
   BOOST_TEST(report.thinned.end_points > 10u); // the tabs' twigs
@@ -304,7 +309,10 @@ BOOST_AUTO_TEST_CASE(a_wing_gets_a_few_joints_whatever_the_resolution)
     BOOST_TEST_CONTEXT("resolution " << resolution)
     {
       Control control;
-      gs::extract_control_skeleton(mesh, control, params::resolution(resolution));
+      // The split's own joints along a sheet, measured in its width (the joint spacing would
+      // add joints near the wing's root, on either side of the |y| = 0.2 that counts them).
+      gs::extract_control_skeleton(mesh, control,
+                                   params::combine(params::resolution(resolution), params::joint_spacing_factor(0.0)));
       std::size_t left = 0, right = 0;
       for(const auto& j : test::joints(control))
       {
@@ -319,6 +327,59 @@ BOOST_AUTO_TEST_CASE(a_wing_gets_a_few_joints_whatever_the_resolution)
   }
   BOOST_TEST(*std::min_element(joints_per_wing.begin(), joints_per_wing.end()) ==
              *std::max_element(joints_per_wing.begin(), joints_per_wing.end()));
+}
+
+// A mirror-symmetric character, moved by random rigid motions, is rigged mirror-symmetrically:
+// each arm and leg of the T-pose figure has as many joints as its mirror image, and each
+// joint has a mirror joint within 1 % of the diagonal (the figure is symmetric across x = 0).
+// The chains end short of the hands and feet and the limbs get joints along them (the
+// defaults of tip_joint_setback and joint_spacing_factor), on both sides alike.
+BOOST_AUTO_TEST_CASE(a_mirror_symmetric_figure_gets_mirror_symmetric_limbs_under_rigid_motions)
+{
+  const Mesh figure = test::mesh_of<Mesh>(test::t_pose_figure());
+  const double diagonal = std::sqrt(1.77 * 1.77 + 1.79 * 1.79 + 0.32 * 0.32);
+  for(unsigned seed = 0; seed <= 3; ++seed)
+  {
+    BOOST_TEST_CONTEXT("motion " << seed)
+    {
+      const auto motion = seed == 0 ? CGAL::Aff_transformation_3<Kernel>(CGAL::IDENTITY)
+                                    : test::random_rigid_motion<Kernel>(seed, 0.3, -1.2, 2.);
+      Mesh moved = figure;
+      for(const auto v : vertices(moved))
+        moved.point(v) = motion.transform(moved.point(v));
+      Control control;
+      gs::extract_control_skeleton(moved, control);
+      std::vector<Point> joints;
+      for(const auto& j : test::joints(control))
+        joints.push_back(motion.inverse().transform(j.point));
+      // Left and right: the arms beyond the shoulders, the legs below the hips.
+      std::size_t left_arm = 0, right_arm = 0, left_leg = 0, right_leg = 0;
+      for(const Point& p : joints)
+      {
+        left_arm += p.x() < -0.2 && p.z() > 1.2;
+        right_arm += p.x() > 0.2 && p.z() > 1.2;
+        left_leg += p.x() < -0.05 && p.z() < 0.8;
+        right_leg += p.x() > 0.05 && p.z() < 0.8;
+      }
+      BOOST_TEST(left_arm >= 2u);
+      BOOST_TEST(left_leg >= 2u);
+      BOOST_TEST(right_arm == left_arm);
+      BOOST_TEST(right_leg == left_leg);
+      double worst = 0;
+      for(const Point& p : joints)
+      {
+        double nearest = std::numeric_limits<double>::infinity();
+        for(const Point& q : joints)
+          nearest = (std::min)(nearest, std::sqrt(CGAL::squared_distance(Point(-p.x(), p.y(), p.z()), q)));
+        worst = (std::max)(worst, nearest);
+      }
+      BOOST_TEST(worst <= 0.01 * diagonal);
+      // No chain ends at a fingertip: the hands end at most 0.75 from the middle (the hand
+      // spheres reach 0.885).
+      for(const Point& p : joints)
+        BOOST_TEST(std::abs(p.x()) <= 0.8);
+    }
+  }
 }
 
 // A cape made as game artists make it: one open sheet of quads whose top edge runs into the

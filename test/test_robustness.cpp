@@ -297,10 +297,12 @@ BOOST_AUTO_TEST_CASE(zero_area_faces_are_harmless)
   const Result r = skeleton_of(mesh);
   check_valid(r, inside_boxes({bar}, 0));
   // The same rig as the bar without the zero-area face: a straight bar is one bone in the
-  // paper's split, cut into bones of about equal length when it is long.
+  // paper's split, cut into bones of about equal length when it is long: about a tenth of
+  // the mesh's extent each (the default joint spacing), and its chain is shorter than that.
   const Result plain = skeleton_of(test::mesh_of<Mesh>(box_soup(bar)));
   BOOST_TEST(num_edges(r.control) == num_edges(plain.control));
-  BOOST_TEST(num_edges(r.control) <= 4u);
+  BOOST_TEST(num_edges(r.control) >= 2u);
+  BOOST_TEST(num_edges(r.control) <= 10u);
 }
 
 BOOST_AUTO_TEST_CASE(overlapping_boxes_give_the_skeleton_of_their_union)

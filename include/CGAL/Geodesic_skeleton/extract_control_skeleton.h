@@ -70,6 +70,8 @@ struct Control_skeleton_report
   double smallest_radius = 0;      ///< the `smallest_radius` the split used, given or default (world units)
   double thin_part_radius = 0;     ///< the `thin_part_radius` the thinning used, given or default (voxels)
   int smoothing_window = 0;        ///< the `smoothing_window` the smoothing used, given or default (points)
+  double tip_joint_setback = 0;    ///< the `tip_joint_setback` the split used, given or default (lengths of the tip's bone)
+  double joint_spacing = 0;        ///< the `joint_spacing` the split used, given or default (world units)
   int level_of_detail_resolution = 0; ///< the `level_of_detail_resolution` the pruning used, given or default
   std::size_t reeb_nodes = 0;      ///< nodes of the Reeb graph, when one was asked for
   std::size_t reeb_edges = 0;      ///< arcs of the Reeb graph, when one was asked for
@@ -168,6 +170,14 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
                                      static_cast<int>(ranges::smoothing_window.default_value)),
                     caller);
   bone_splitting_settings(np, caller);
+  checked_parameter(ranges::tip_joint_setback,
+                    choose_parameter(get_parameter(np, internal_np::tip_joint_setback_tag),
+                                     ranges::tip_joint_setback.default_value),
+                    caller);
+  checked_parameter(ranges::joint_spacing_factor,
+                    choose_parameter(get_parameter(np, internal_np::joint_spacing_factor_tag),
+                                     ranges::joint_spacing_factor.default_value),
+                    caller);
   checked_parameter(ranges::level_of_detail_resolution,
                     choose_parameter(get_parameter(np, internal_np::level_of_detail_resolution_tag),
                                      default_voxel_resolution),
@@ -188,7 +198,8 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 /// package's addition to it, the snipping of spurious branches), `to_graph()` (the curve
 /// skeleton, with the mesh vertices mapped to it), `smooth_skeleton()` (5-point moving
 /// average) and `split_into_bones()` (joints and bones, rooted at the most central
-/// junction).
+/// junction; its chains end short of the tips and its long bones are cut at a spacing, as
+/// artists place joints: `tip_joint_setback`, `joint_spacing_factor`).
 ///
 /// `thin()` also records the sheet radius of the voxels it keeps (its `sheet_radius_map`),
 /// and `prune_skeleton()` gets them beside the MAT radii (its `sheet_radius_map` and
@@ -319,6 +330,22 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
 ///     \cgalParamDescription{the settings of `split_into_bones()`}
 ///     \cgalParamType{as for `split_into_bones()`}
 ///     \cgalParamDefault{as for `split_into_bones()`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{tip_joint_setback}
+///     \cgalParamDescription{the setting of `split_into_bones()`: a tip's joint sits this share
+///                           of its bone's length back from the tip, where artists end a chain}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{0.3 (calibrated on the artists' rigs, manual section
+///                       \ref manual_split_into_bones)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{joint_spacing_factor}
+///     \cgalParamDescription{the `joint_spacing` of `split_into_bones()`, in longest principal
+///                           extents of the mesh, in [0, 1]: long bones are cut into lengths of
+///                           about this share of the shape; 0 turns it off. A `joint_spacing`
+///                           given in world units takes its place}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{0.1 (calibrated on the artists' rigs, manual section
+///                       \ref manual_split_into_bones)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{smallest_radius}
 ///     \cgalParamDescription{the setting of `split_into_bones()`: the smallest radius its
@@ -522,8 +549,19 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
     for(std::size_t v = 0; v < piece_widths.size(); ++v)
       piece_widths[v] = (std::max)(piece_widths[v], coarse_widths[v]);
   }
+  // Chains end short of the tips and long bones get joints in between, as artists place them;
+  // the spacing is a share of the whole shape, so a character gets as many joints at any size.
+  report.tip_joint_setback = choose_parameter(get_parameter(np, internal_np::tip_joint_setback_tag),
+                                              parameter_ranges::tip_joint_setback.default_value);
+  report.joint_spacing = choose_parameter(
+      get_parameter(np, internal_np::joint_spacing_tag),
+      default_joint_spacing(report.voxel_size, report.resolution,
+                            choose_parameter(get_parameter(np, internal_np::joint_spacing_factor_tag),
+                                             parameter_ranges::joint_spacing_factor.default_value)));
   split_into_bones(curve, out,
                    parameters::combine(parameters::smallest_radius(report.smallest_radius),
+                                       parameters::tip_joint_setback(report.tip_joint_setback),
+                                       parameters::joint_spacing(report.joint_spacing),
                                        parameters::sheet_half_width_map(CGAL::make_property_map(sheet_widths)),
                                        parameters::piece_radius_map(CGAL::make_property_map(piece_widths)), curve_np));
   report.joints_moved_inside = internal::joints_on_vertices(out, moved_inside);

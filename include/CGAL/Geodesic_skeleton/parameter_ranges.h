@@ -103,6 +103,15 @@ inline constexpr Parameter_range maximum_bone_length_factor{"maximum_bone_length
 /// level of detail, whatever the grid resolves (0: no such floor).
 inline constexpr Parameter_range minimum_bone_length_of_piece_factor{"minimum_bone_length_of_piece_factor", 0, 1000,
                                                                      0.5, false, false};
+/// `split_into_bones()`: how far back from a tip of the skeleton its joint sits, in lengths of
+/// its bone (0 in `split_into_bones()` unless given; the default is `extract_control_skeleton()`'s).
+inline constexpr Parameter_range tip_joint_setback{"tip_joint_setback", 0, 0.45, 0.3, false, false};
+/// `split_into_bones()`: the length that bones are cut into, in world units (0: no cut).
+inline constexpr Parameter_range joint_spacing{"joint_spacing", 0, std::numeric_limits<double>::infinity(), 0,
+                                               false, false};
+/// `extract_control_skeleton()`: the `joint_spacing` of `split_into_bones()`, in longest principal
+/// extents of the mesh (0: no cut).
+inline constexpr Parameter_range joint_spacing_factor{"joint_spacing_factor", 0, 1, 0.1, false, false};
 /// `split_into_bones()`: each chord length, in mean MAT radii (defaults: 3 and 6).
 inline constexpr Parameter_range chord_length_factor{"chord_length_factors", 1e-3, 1000, 3.0, false, false};
 /// `chord_to_point_distance_accumulation()`: chords averaged per point.

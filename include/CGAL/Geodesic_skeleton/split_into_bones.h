@@ -10,6 +10,7 @@
 
 #include <CGAL/Geodesic_skeleton/Control_skeleton.h>
 #include <CGAL/Geodesic_skeleton/internal/split_into_bones/bone_splitting.h>
+#include <CGAL/Geodesic_skeleton/internal/split_into_bones/chain_joints.h>
 #include <CGAL/Geodesic_skeleton/internal/split_into_bones/control_tree.h>
 #include <CGAL/Geodesic_skeleton/internal/skeleton_branches.h>
 #include <CGAL/Geodesic_skeleton/internal/skeleton_vertex_maps.h>
@@ -54,13 +55,17 @@ Bone_splitting_settings bone_splitting_settings(const NamedParameters& np,
                                            2 * ranges::chord_length_factor.default_value}),
       choose_parameter(get_parameter(np, internal_np::smallest_radius_tag), ranges::smallest_radius.default_value),
       choose_parameter(get_parameter(np, internal_np::minimum_bone_length_of_piece_factor_tag),
-                       ranges::minimum_bone_length_of_piece_factor.default_value)};
+                       ranges::minimum_bone_length_of_piece_factor.default_value),
+      choose_parameter(get_parameter(np, internal_np::tip_joint_setback_tag), 0.0),
+      choose_parameter(get_parameter(np, internal_np::joint_spacing_tag), ranges::joint_spacing.default_value)};
   checked_parameter(ranges::bend_threshold, s.bend_threshold, caller);
   checked_parameter(ranges::straightness_tolerance, s.straightness_tolerance, caller);
   checked_parameter(ranges::minimum_bone_length_factor, s.minimum_bone_length_factor, caller);
   checked_parameter(ranges::maximum_bone_length_factor, s.maximum_bone_length_factor, caller);
   checked_parameter(ranges::smallest_radius, s.smallest_radius, caller);
   checked_parameter(ranges::minimum_bone_length_of_piece_factor, s.minimum_bone_length_of_piece_factor, caller);
+  checked_parameter(ranges::tip_joint_setback, s.tip_joint_setback, caller);
+  checked_parameter(ranges::joint_spacing, s.joint_spacing, caller);
   if(s.chord_length_factors.empty())
     throw std::invalid_argument(caller + ": chord_length_factors must not be empty");
   for(double f : s.chord_length_factors)
@@ -174,10 +179,12 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
     }
     return static_cast<std::size_t>(joint_of[v]);
   };
+  // The junctions, and the points of a piece of one point; the joints of the tips are placed
+  // with the branches that end there (set back from the tip when asked).
   for(std::size_t v = 0; v < n; ++v)
   {
     const std::size_t d = boost::degree(v, skeleton);
-    if(d != 2)
+    if(d >= 3 || d == 0)
       add_joint(v, d >= 3 ? Joint_kind::junction : Joint_kind::end);
   }
 
@@ -209,12 +216,21 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
       radii.push_back(length_unit_of[v]);
     }
     Branch_splitter splitter(points, radii, settings, largest_radius_of_piece[b.front()]);
-    const std::vector<std::size_t> cuts = splitter.joints();
+    std::vector<std::size_t> cuts = splitter.joints();
+    std::vector<double> arc(points.size(), 0.0);
+    for(std::size_t k = 1; k < points.size(); ++k)
+      arc[k] = arc[k - 1] + norm3(sub(points[k], points[k - 1]));
+    const bool front_is_tip = !branch.closed && boost::degree(b.front(), skeleton) == 1;
+    const bool back_is_tip = !branch.closed && boost::degree(b.back(), skeleton) == 1;
+    set_back_tip_joints(arc, front_is_tip, back_is_tip, settings.tip_joint_setback, cuts);
+    // A tie goes towards the body: the end that is not a tip (mirror-image limbs alike).
+    space_joints(arc, settings.joint_spacing, cuts, front_is_tip && !back_is_tip);
     for(std::size_t c = 0; c + 1 < cuts.size(); ++c)
     {
       Control_bone<Point> bone;
-      const std::size_t first = add_joint(b[cuts[c]], Joint_kind::bend);
-      const std::size_t last = add_joint(b[cuts[c + 1]], Joint_kind::bend);
+      const std::size_t first = add_joint(b[cuts[c]], c == 0 && front_is_tip ? Joint_kind::end : Joint_kind::bend);
+      const std::size_t last =
+          add_joint(b[cuts[c + 1]], c + 2 == cuts.size() && back_is_tip ? Joint_kind::end : Joint_kind::bend);
       for(std::size_t k = cuts[c]; k <= cuts[c + 1]; ++k)
       {
         bone.points.emplace_back(points[k][0], points[k][1], points[k][2]);
@@ -247,6 +263,23 @@ inline double default_smallest_radius(double voxel_size, int resolution)
 }
 
 /// \ingroup PkgGeodesicSkeletonRef
+/// The `joint_spacing` that `extract_control_skeleton()` gives `split_into_bones()` on a grid
+/// of `resolution` voxels of `voxel_size` along the longest principal extent of the mesh:
+/// `factor` times that extent (`voxel_size` `resolution`), so that a character gets as many
+/// joints at any size and any resolution.
+/// \param voxel_size the edge length of a voxel of the grid (world units).
+/// \param resolution the resolution of that grid (`resolution` named parameter).
+/// \param factor the spacing in extents (`joint_spacing_factor`, default 0.1).
+/// \pre `voxel_size` >= 0, `resolution` > 0 and `factor` >= 0.
+///
+/// \b Complexity: O(1).
+inline double default_joint_spacing(double voxel_size, int resolution,
+                                    double factor = parameter_ranges::joint_spacing_factor.default_value)
+{
+  return factor * voxel_size * double(resolution);
+}
+
+/// \ingroup PkgGeodesicSkeletonRef
 /// Splits a (smoothed) curve skeleton into the joints and bones of an animation control
 /// skeleton, a rooted tree per connected component.
 ///
@@ -267,6 +300,8 @@ inline double default_smallest_radius(double voxel_size, int resolution)
 /// equal-length position (an elbow, a knee, a wrist); each component is rooted at
 /// its most central junction; when the shape has handles, the bones left off the trees (one
 /// per independent cycle) are in the graph bundle's `Control_skeleton_property::cut_bones`.
+/// Where asked (`tip_joint_setback`, `joint_spacing`), the joints of the tips move back along
+/// their bones and long bones are cut at a spacing, as artists place joints.
 /// The steps are described in the manual, section
 /// \ref manual_split_into_bones.
 ///
@@ -400,6 +435,27 @@ inline double default_smallest_radius(double voxel_size, int resolution)
 ///                           [0.001, 1000] (package parameter)}
 ///     \cgalParamType{`std::vector<double>`}
 ///     \cgalParamDefault{{3, 6}}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{tip_joint_setback}
+///     \cgalParamDescription{where a chain ends, as artists end it (at the wrist, the head
+///                           joint, the last tail joint, not at the tip): the joint at a tip of
+///                           the skeleton (a vertex of degree 1) moves back along its bone by
+///                           this share of the bone's length, to the nearest vertex of the
+///                           branch, in [0, 0.45]; the vertices beyond it are in no bone. A lone
+///                           bone with two tips is set back from both (package parameter)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{0 (joints at the tips); `extract_control_skeleton()` passes 0.3}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{joint_spacing}
+///     \cgalParamDescription{the length, in world units, that bones are cut into after the
+///                           split and the set-back, in [0, inf]: a bone of length l becomes
+///                           round(l / spacing) bones of about equal length (one when that is 0),
+///                           cut at the vertices nearest the equal-length positions; artists
+///                           put joints along a spine or a straight limb that no bend marks.
+///                           0 turns this off (package parameter)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{0; `extract_control_skeleton()` passes `joint_spacing_factor` times
+///                       the mesh's longest principal extent}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///

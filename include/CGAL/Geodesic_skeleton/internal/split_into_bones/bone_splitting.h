@@ -42,6 +42,8 @@ struct Bone_splitting_settings
   std::vector<double> chord_length_factors; // CPDA chord lengths, in MAT radii
   double smallest_radius = 0;               // radii below it count as it in every length (world units)
   double minimum_bone_length_of_piece_factor = 0; // shortest bone, in largest MAT radii of the piece
+  double tip_joint_setback = 0; // a tip's joint sits this share of its bone's length back from the tip
+  double joint_spacing = 0;     // bones are cut into lengths of about this (world units; 0: not cut)
 };
 
 class Branch_splitter

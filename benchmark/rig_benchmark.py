@@ -1,0 +1,186 @@
+#!/usr/bin/python3
+"""Rig benchmark: our rigs against artists' rigs.
+
+    rig_benchmark.py SKELETONIZE DATA SPLIT [--out DIR] [--threads N] [--rows] [-- skeletonize options]
+
+DATA is a folder as ../shared/rigs/convert.sh writes it: DATA/SPLIT_final.txt lists the
+characters, DATA/SPLIT/ID.obj is a mesh and DATA/SPLIT/ID_rig.txt its artist's rig in the
+RigNet format (lines `joints NAME x y z`, `root NAME`, `hier PARENT CHILD`; `skin` lines are
+not read here). SKELETONIZE is the package's program; it rigs every mesh of the split in one
+batch (--out DIR keeps its JSON files, a temporary folder otherwise).
+
+Prints, over the characters (and per character with --rows), in units of the mesh's largest
+axis-aligned extent:
+  CD-J2J  half the sum of the mean distance from each of our joints to the nearest artist
+          joint and the reverse;
+  CD-J2B  the same from joints to the nearest bone (segment) of the other rig;
+  CD-B2B  the same between points spaced 0.005 along the bones of both rigs;
+the joint counts (ours, the artist's), the characters with fewer than 4 joints, a missing
+limb (an artist's end joint farther than 0.05 from every bone of ours) and an extra branch
+(an end joint of ours farther than 0.05 from every bone of the artist's). A rig without bones
+counts its joints as bones of length 0.
+"""
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+LIMB_DISTANCE = 0.05  # an end joint this far from every bone of the other rig: a limb one rig lacks
+SAMPLE_STEP = 0.005   # spacing of the points of CD-B2B
+
+
+def mesh_extent(obj_path):
+    lo = np.full(3, np.inf)
+    hi = np.full(3, -np.inf)
+    with open(obj_path) as f:
+        for line in f:
+            if line.startswith('v '):
+                p = np.array([float(x) for x in line.split()[1:4]])
+                lo = np.minimum(lo, p)
+                hi = np.maximum(hi, p)
+    return float((hi - lo).max())
+
+
+def artist_rig(rig_path):
+    """Joint positions (n x 3) and bones (pairs of joint indices) of a RigNet rig file."""
+    index, positions, bones = {}, [], []
+    with open(rig_path) as f:
+        for line in f:
+            words = line.split()
+            if words and words[0] == 'joints':
+                index[words[1]] = len(positions)
+                positions.append([float(x) for x in words[2:5]])
+            elif words and words[0] == 'hier':
+                bones.append((words[1], words[2]))
+    return np.array(positions, float).reshape(-1, 3), [(index[a], index[b]) for a, b in bones]
+
+
+def our_rig(json_path):
+    control = json.load(open(json_path))['control']
+    positions = np.array([j['position'] for j in control['joints']], float).reshape(-1, 3)
+    return positions, [tuple(b) for b in control['bones']]
+
+
+def segments(joints, bones):
+    if not bones:
+        return joints, joints
+    b = np.array(bones)
+    return joints[b[:, 0]], joints[b[:, 1]]
+
+
+def distances_to_points(p, q):
+    return np.sqrt(((p[:, None, :] - q[None, :, :]) ** 2).sum(-1)).min(1)
+
+
+def distances_to_segments(p, a, b):
+    d = b - a
+    dd = (d * d).sum(-1)
+    t = ((p[:, None, :] - a[None]) * d[None]).sum(-1) / np.where(dd > 0, dd, 1.0)[None]
+    t = np.clip(np.where(dd[None] > 0, t, 0.0), 0.0, 1.0)
+    nearest = a[None] + t[..., None] * d[None]
+    return np.sqrt(((p[:, None, :] - nearest) ** 2).sum(-1)).min(1)
+
+
+def points_along(a, b, step):
+    parts = []
+    for p, q in zip(a, b):
+        n = max(1, int(np.ceil(np.linalg.norm(q - p) / step)))
+        parts.append(p + np.linspace(0.0, 1.0, n + 1)[:, None] * (q - p))
+    return np.concatenate(parts)
+
+
+def end_joints(joints, bones):
+    degree = np.zeros(len(joints), int)
+    for a, b in bones:
+        degree[a] += 1
+        degree[b] += 1
+    return joints[degree == 1] if bones else joints
+
+
+def measures(ours, artists):
+    (oj, ob), (aj, ab) = ours, artists
+    o0, o1 = segments(oj, ob)
+    a0, a1 = segments(aj, ab)
+    op, ap = points_along(o0, o1, SAMPLE_STEP), points_along(a0, a1, SAMPLE_STEP)
+    missing = distances_to_segments(end_joints(aj, ab), o0, o1)
+    extra = distances_to_segments(end_joints(oj, ob), a0, a1)
+    return {
+        'cd_j2j': 0.5 * (distances_to_points(oj, aj).mean() + distances_to_points(aj, oj).mean()),
+        'cd_j2b': 0.5 * (distances_to_segments(oj, a0, a1).mean() + distances_to_segments(aj, o0, o1).mean()),
+        'cd_b2b': 0.5 * (distances_to_points(op, ap).mean() + distances_to_points(ap, op).mean()),
+        'joints': len(oj), 'artist_joints': len(aj),
+        'missing_limbs': int((missing > LIMB_DISTANCE).sum()), 'extra_branches': int((extra > LIMB_DISTANCE).sum()),
+    }
+
+
+def score(data, split, out, ids):
+    rows = []
+    for i in ids:
+        mesh = os.path.join(data, split, i + '.obj')
+        result = os.path.join(out, i + '.json')
+        if not os.path.exists(result):
+            rows.append({'id': i, 'failed': True})
+            continue
+        scale = 1.0 / mesh_extent(mesh)
+        oj, ob = our_rig(result)
+        aj, ab = artist_rig(os.path.join(data, split, i + '_rig.txt'))
+        if len(oj) == 0:
+            rows.append({'id': i, 'failed': True})
+            continue
+        row = measures((oj * scale, ob), (aj * scale, ab))
+        row['id'] = i
+        rows.append(row)
+    return rows
+
+
+def summary(rows):
+    good = [r for r in rows if not r.get('failed')]
+    if not good:
+        return '%d characters, none rigged' % len(rows)
+    lines = ['%d characters, %d rigged, %d failed' % (len(rows), len(good), len(rows) - len(good))]
+    for key in ['cd_j2j', 'cd_j2b', 'cd_b2b', 'joints', 'artist_joints']:
+        values = [r[key] for r in good]
+        lines.append('%-14s mean %.4f  median %.4f' % (key, statistics.mean(values), statistics.median(values)))
+    lines.append('fewer than 4 joints: %d' % sum(r['joints'] < 4 for r in good))
+    lines.append('with a missing limb: %d (%d limbs)' % (sum(r['missing_limbs'] > 0 for r in good),
+                                                       sum(r['missing_limbs'] for r in good)))
+    lines.append('with an extra branch: %d (%d branches)' % (sum(r['extra_branches'] > 0 for r in good),
+                                                           sum(r['extra_branches'] for r in good)))
+    return '\n'.join(lines)
+
+
+def main(argv):
+    if '--' in argv:
+        options = argv[argv.index('--') + 1:]
+        argv = argv[:argv.index('--')]
+    else:
+        options = []
+    if len(argv) < 3:
+        sys.exit(__doc__)
+    skeletonize, data, split = argv[:3]
+    rest = argv[3:]
+    out = rest[rest.index('--out') + 1] if '--out' in rest else tempfile.mkdtemp(prefix='rig_benchmark_')
+    threads = rest[rest.index('--threads') + 1] if '--threads' in rest else str(os.cpu_count() or 1)
+    ids = [line.strip() for line in open(os.path.join(data, split + '_final.txt')) if line.strip()]
+    listing = os.path.join(out, 'meshes.txt')
+    os.makedirs(out, exist_ok=True)
+    with open(listing, 'w') as f:
+        f.write('\n'.join(os.path.abspath(os.path.join(data, split, i + '.obj')) for i in ids) + '\n')
+    # The batch exits with 1 when a mesh failed (it counts as failed here), 2 on bad usage.
+    run = subprocess.run([skeletonize, '--batch', listing, '-o', out, '--threads', threads] + options,
+                         stdout=subprocess.DEVNULL, check=False)
+    if run.returncode not in (0, 1):
+        sys.exit('rig_benchmark: %s exited with %d' % (skeletonize, run.returncode))
+    rows = score(data, split, out, ids)
+    if '--rows' in rest:
+        for r in rows:
+            print(json.dumps(r))
+    print(summary(rows))
+
+
+if __name__ == '__main__':
+    main(sys.argv[1:])
