@@ -169,11 +169,7 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
                     choose_parameter(get_parameter(np, internal_np::smoothing_window_tag),
                                      static_cast<int>(ranges::smoothing_window.default_value)),
                     caller);
-  bone_splitting_settings(np, caller);
-  checked_parameter(ranges::tip_joint_setback,
-                    choose_parameter(get_parameter(np, internal_np::tip_joint_setback_tag),
-                                     ranges::tip_joint_setback.default_value),
-                    caller);
+  bone_splitting_settings(np, caller); // tip_joint_setback and joint_spacing too, when given
   checked_parameter(ranges::joint_spacing_factor,
                     choose_parameter(get_parameter(np, internal_np::joint_spacing_factor_tag),
                                      ranges::joint_spacing_factor.default_value),

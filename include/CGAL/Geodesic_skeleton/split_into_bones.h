@@ -217,9 +217,7 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
     }
     Branch_splitter splitter(points, radii, settings, largest_radius_of_piece[b.front()]);
     std::vector<std::size_t> cuts = splitter.joints();
-    std::vector<double> arc(points.size(), 0.0);
-    for(std::size_t k = 1; k < points.size(); ++k)
-      arc[k] = arc[k - 1] + norm3(sub(points[k], points[k - 1]));
+    const std::vector<double>& arc = splitter.arc_lengths();
     const bool front_is_tip = !branch.closed && boost::degree(b.front(), skeleton) == 1;
     const bool back_is_tip = !branch.closed && boost::degree(b.back(), skeleton) == 1;
     set_back_tip_joints(arc, front_is_tip, back_is_tip, settings.tip_joint_setback, cuts);

@@ -60,6 +60,9 @@ public:
       m_s[i] = m_s[i - 1] + norm3(sub(m_p[i], m_p[i - 1]));
   }
 
+  // The arc length from the branch's first point to each of its points.
+  const std::vector<double>& arc_lengths() const { return m_s; }
+
   // The indices where the branch is cut into bones, from 0 to N-1 included, increasing.
   std::vector<std::size_t> joints()
   {

@@ -56,14 +56,14 @@ inline void set_back_tip_joints(const std::vector<double>& arc, bool front_is_ti
   const double back_length = arc[cuts[last]] - arc[cuts[last - 1]];
   if(back_is_tip)
   {
-    const std::size_t floor = cuts[last - 1] + 1;
-    cuts[last] = nearest_arc_length(arc, arc[cuts[last]] - setback * back_length, floor, cuts[last], false);
+    const std::size_t nearest_allowed = cuts[last - 1] + 1;
+    cuts[last] = nearest_arc_length(arc, arc[cuts[last]] - setback * back_length, nearest_allowed, cuts[last], false);
   }
   if(front_is_tip)
   {
-    const std::size_t ceiling = cuts[1] - 1;
-    if(ceiling >= cuts[0])
-      cuts[0] = nearest_arc_length(arc, arc[cuts[0]] + setback * front_length, cuts[0], ceiling, true);
+    const std::size_t farthest_allowed = cuts[1] - 1;
+    if(farthest_allowed >= cuts[0])
+      cuts[0] = nearest_arc_length(arc, arc[cuts[0]] + setback * front_length, cuts[0], farthest_allowed, true);
   }
 }
 
