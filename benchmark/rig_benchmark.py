@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Rig benchmark: our rigs against artists' rigs.
 
-    rig_benchmark.py SKELETONIZE DATA SPLIT [--out DIR] [--threads N] [--rows] [-- skeletonize options]
+    rig_benchmark.py SKELETONIZE DATA SPLIT [--out DIR] [--threads N] [--rows] [--also-at RESOLUTION]
+                     [-- skeletonize options]
 
 DATA is a folder as ../shared/rigs/convert.sh writes it: DATA/SPLIT_final.txt lists the
 characters, DATA/SPLIT/ID.obj is a mesh and DATA/SPLIT/ID_rig.txt its artist's rig in the
@@ -19,6 +20,10 @@ the joint counts (ours, the artist's), the characters with fewer than 4 joints, 
 limb (an artist's end joint farther than 0.05 from every bone of ours) and an extra branch
 (an end joint of ours farther than 0.05 from every bone of the artist's). A rig without bones
 counts its joints as bones of length 0.
+
+With --also-at RESOLUTION, the split is rigged again at that resolution, and the share of the
+characters whose joint count there is within 25 % of the first run's is printed: which joints
+a rig has should not depend on the grid.
 """
 import json
 import os
@@ -166,8 +171,23 @@ def main(argv):
     out = rest[rest.index('--out') + 1] if '--out' in rest else tempfile.mkdtemp(prefix='rig_benchmark_')
     threads = rest[rest.index('--threads') + 1] if '--threads' in rest else str(os.cpu_count() or 1)
     ids = [line.strip() for line in open(os.path.join(data, split + '_final.txt')) if line.strip()]
-    listing = os.path.join(out, 'meshes.txt')
+    rig_split(skeletonize, data, split, ids, out, threads, options)
+    rows = score(data, split, out, ids)
+    if '--rows' in rest:
+        for r in rows:
+            print(json.dumps(r))
+    print(summary(rows))
+    if '--also-at' in rest:
+        resolution = rest[rest.index('--also-at') + 1]
+        other = os.path.join(out, 'at_' + resolution)
+        rig_split(skeletonize, data, split, ids, other, threads, options + ['--resolution', resolution])
+        print(resolution_stability(rows, other, resolution))
+
+
+def rig_split(skeletonize, data, split, ids, out, threads, options):
+    """Rigs the split's meshes into OUT/ID.json with one skeletonize batch."""
     os.makedirs(out, exist_ok=True)
+    listing = os.path.join(out, 'meshes.txt')
     with open(listing, 'w') as f:
         f.write('\n'.join(os.path.abspath(os.path.join(data, split, i + '.obj')) for i in ids) + '\n')
     # The batch exits with 1 when a mesh failed (it counts as failed here), 2 on bad usage.
@@ -175,11 +195,19 @@ def main(argv):
                          stdout=subprocess.DEVNULL, check=False)
     if run.returncode not in (0, 1):
         sys.exit('rig_benchmark: %s exited with %d' % (skeletonize, run.returncode))
-    rows = score(data, split, out, ids)
-    if '--rows' in rest:
-        for r in rows:
-            print(json.dumps(r))
-    print(summary(rows))
+
+
+def resolution_stability(rows, other, resolution):
+    stable, compared = 0, 0
+    for r in rows:
+        result = os.path.join(other, r['id'] + '.json')
+        if r.get('failed') or not os.path.exists(result):
+            continue
+        joints = len(our_rig(result)[0])
+        compared += 1
+        stable += 0.75 <= joints / r['joints'] <= 1.25
+    return 'joints at resolution %s within 25 %% of the first run\'s: %d of %d (%.1f %%)' % (
+        resolution, stable, compared, 100.0 * stable / max(compared, 1))
 
 
 if __name__ == '__main__':
