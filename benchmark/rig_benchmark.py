@@ -21,10 +21,21 @@ limb (an artist's end joint farther than 0.05 from every bone of ours) and an ex
 (an end joint of ours farther than 0.05 from every bone of the artist's). A rig without bones
 counts its joints as bones of length 0.
 
+With --skinning, the skin weights are measured instead, with the artist's skeleton given
+(`skeletonize MESH --skeleton SKELETON.json --weights`) and the artist's weights as the
+reference (skinning_measures.py defines the measures): medians over the characters of the
+precision and recall of the influencing joints, L1, the share of vertices whose top joint is
+the artist's and of those whose top joint is 3 or more bones away, the average and largest
+deformation over 10 random poses, bones per vertex, the largest weight, the time; for ours
+and, in the same run, for the nearest-bone rule (the floor) and for Blender's bone heat when
+--bone-heat DIR holds its outputs (ID.json, from ../shared/rigs/bone_heat_weights.py).
+--scale S rigs the meshes scaled by S (the weights should not change).
+
 With --also-at RESOLUTION, the split is rigged again at that resolution, and the share of the
 characters whose joint count there is within 25 % of the first run's is printed: which joints
 a rig has should not depend on the grid.
 """
+import concurrent.futures
 import json
 import os
 import statistics
@@ -33,6 +44,8 @@ import sys
 import tempfile
 
 import numpy as np
+
+import skinning_measures
 
 LIMB_DISTANCE = 0.05  # an end joint this far from every bone of the other rig: a limb one rig lacks
 SAMPLE_STEP = 0.005   # spacing of the points of CD-B2B
@@ -171,6 +184,13 @@ def main(argv):
     out = rest[rest.index('--out') + 1] if '--out' in rest else tempfile.mkdtemp(prefix='rig_benchmark_')
     threads = rest[rest.index('--threads') + 1] if '--threads' in rest else str(os.cpu_count() or 1)
     ids = [line.strip() for line in open(os.path.join(data, split + '_final.txt')) if line.strip()]
+    if '--first' in rest:
+        ids = ids[:int(rest[rest.index('--first') + 1])]
+    if '--skinning' in rest:
+        scale = float(rest[rest.index('--scale') + 1]) if '--scale' in rest else 1.0
+        bone_heat = rest[rest.index('--bone-heat') + 1] if '--bone-heat' in rest else None
+        skin_split(skeletonize, data, split, ids, out, int(threads), options, scale, bone_heat, '--rows' in rest)
+        return
     rig_split(skeletonize, data, split, ids, out, threads, options)
     rows = score(data, split, out, ids)
     if '--rows' in rest:
@@ -195,6 +215,88 @@ def rig_split(skeletonize, data, split, ids, out, threads, options):
                          stdout=subprocess.DEVNULL, check=False)
     if run.returncode not in (0, 1):
         sys.exit('rig_benchmark: %s exited with %d' % (skeletonize, run.returncode))
+
+
+def read_obj_vertices(path):
+    with open(path) as f:
+        return np.array([[float(x) for x in line.split()[1:4]] for line in f if line.startswith('v ')], float)
+
+
+def skin_character(skeletonize, data, split, i, out, options, scale):
+    """Skins one character to its artist's skeleton; the report's path, or None on failure."""
+    mesh = os.path.join(data, split, i + '.obj')
+    rig = skinning_measures.ArtistRig(os.path.join(data, split, i + '_rig.txt'), 0)
+    skeleton = rig.skeleton_json()
+    if scale != 1.0:
+        scaled = os.path.join(out, i + '.obj')
+        with open(mesh) as f, open(scaled, 'w') as g:
+            for line in f:
+                if line.startswith('v '):
+                    g.write('v %.9g %.9g %.9g\n' % tuple(scale * float(x) for x in line.split()[1:4]))
+                else:
+                    g.write(line)
+        mesh = scaled
+        for joint in skeleton['joints']:
+            joint['position'] = [scale * x for x in joint['position']]
+    skeleton_path = os.path.join(out, i + '_skeleton.json')
+    json.dump(skeleton, open(skeleton_path, 'w'))
+    report = os.path.join(out, i + '_weights.json')
+    run = subprocess.run([skeletonize, mesh, '--skeleton', skeleton_path, '--weights', '-o', report] + options,
+                         stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, check=False)
+    return report if run.returncode == 0 else None
+
+
+def bone_heat_weights(path, rig, vertices):
+    result = json.load(open(path))
+    weights = np.zeros((vertices, len(rig.names)))
+    index = {name: j for j, name in enumerate(result.get('joints', rig.names))}
+    for v, pairs in enumerate(result['weights']):
+        for joint, w in pairs:
+            j = joint if isinstance(joint, int) else index[joint]
+            weights[v, rig.owner[rig.names.index(result['joints'][j]) if 'joints' in result else j]] += w
+    return weights
+
+
+def skin_split(skeletonize, data, split, ids, out, threads, options, scale, bone_heat, print_rows):
+    os.makedirs(out, exist_ok=True)
+    with concurrent.futures.ThreadPoolExecutor(threads) as pool:
+        reports = dict(zip(ids, pool.map(lambda i: skin_character(skeletonize, data, split, i, out, options, scale),
+                                         ids)))
+    methods = ['ours', 'nearest_bone', 'artist'] + (['bone_heat'] if bone_heat else [])
+    rows = {m: [] for m in methods}
+    failed = {m: 0 for m in methods}
+    for i in ids:
+        vertices = read_obj_vertices(os.path.join(data, split, i + '.obj'))
+        rig = skinning_measures.ArtistRig(os.path.join(data, split, i + '_rig.txt'), len(vertices))
+        extent = float((vertices.max(0) - vertices.min(0)).max())
+        candidates = {'nearest_bone': (skinning_measures.nearest_bone_weights(vertices, rig), 0.0),
+                      'artist': (rig.weights, 0.0)}
+        if reports[i]:
+            candidates['ours'] = skinning_measures.weights_from_bones(reports[i], rig)
+        if bone_heat and os.path.exists(os.path.join(bone_heat, i + '.json')):
+            heat = json.load(open(os.path.join(bone_heat, i + '.json')))
+            candidates['bone_heat'] = (bone_heat_weights(os.path.join(bone_heat, i + '.json'), rig, len(vertices)),
+                                       1000.0 * heat.get('seconds', 0.0))
+        for m in methods:
+            if m not in candidates or candidates[m][0].shape[0] != len(vertices) or not candidates[m][0].any():
+                failed[m] += 1
+                continue
+            row = skinning_measures.measures(vertices, 1.0 / extent, rig, candidates[m][0])
+            row['milliseconds'] = candidates[m][1]
+            row['id'] = i
+            failed[m] += row['unweighted'] == len(vertices)
+            rows[m].append(row)
+            if print_rows:
+                print(m, json.dumps(row))
+    print('%d characters, skinned to the artist\'s skeleton; medians over the characters' % len(ids))
+    print('%-13s' % 'method' + ''.join('%11s' % k[:10] for k in skinning_measures.KEYS) + '  failed  unweighted')
+    for m in methods:
+        line = '%-13s' % m
+        for k in skinning_measures.KEYS:
+            values = [r[k] for r in rows[m] if not np.isnan(r[k])]
+            line += '%11.4f' % statistics.median(values) if values else '%11s' % '-'
+        line += '%8d %11d' % (failed[m], sum(r['unweighted'] for r in rows[m]))
+        print(line)
 
 
 def resolution_stability(rows, other, resolution):

@@ -11,7 +11,7 @@ file(READ ${WORK_DIR}/rig.json rig)
 file(READ ${WORK_DIR}/skinned.json json)
 string(JSON rig_bones LENGTH "${rig}" control bones)
 string(JSON bones LENGTH "${json}" control bones)
-string(JSON vertices GET "${json}" mesh vertices)
+string(JSON vertices GET "${json}" weights vertices)
 if(NOT bones EQUAL rig_bones)
   message(FATAL_ERROR "--skeleton: ${bones} bones, the rig has ${rig_bones}")
 endif()
@@ -61,6 +61,26 @@ file(READ ${WORK_DIR}/weights.svg svg LIMIT 300)
 if(NOT svg MATCHES "^<svg.*bone of largest weight")
   message(FATAL_ERROR "the weights picture is not an SVG of the segmentation")
 endif()
+# The weights are numbered by the file's vertices even when the repair renumbers the mesh's:
+# a cube with a face turned the wrong way, whose vertex 8 repeats vertex 1 (a seam) and
+# whose vertex 9 is in no face.
+file(WRITE ${WORK_DIR}/seam.obj "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+     "v 1 0 0\nv 5 5 5\nf 1 2 3\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 9 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\n"
+     "f 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\n")
+file(WRITE ${WORK_DIR}/seam_rig.json
+     "{\"joints\": [{\"position\": [0.5, 0.5, 0.1], \"parent\": -1}, {\"position\": [0.5, 0.5, 0.9], \"parent\": 0}]}")
+run(${WORK_DIR}/seam.obj --skeleton ${WORK_DIR}/seam_rig.json --weights -o ${WORK_DIR}/seam.json)
+file(READ ${WORK_DIR}/seam.json json)
+string(JSON mesh_vertices GET "${json}" mesh vertices)
+string(JSON vertices GET "${json}" weights vertices)
+string(JSON entries LENGTH "${json}" weights vertex)
+math(EXPR last "${entries} - 1")
+string(JSON last_vertex GET "${json}" weights vertex ${last})
+if(NOT vertices EQUAL 10 OR NOT last_vertex EQUAL 9 OR mesh_vertices EQUAL 10)
+  message(FATAL_ERROR "seam.obj: weights for ${vertices} vertices (the last ${last_vertex}), "
+                      "the file has 10, the repaired mesh ${mesh_vertices}")
+endif()
+
 file(GLOB partial ${WORK_DIR}/*.partial)
 if(partial)
   message(FATAL_ERROR "temporary files left: ${partial}")

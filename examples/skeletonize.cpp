@@ -93,7 +93,8 @@ struct Options
   std::string skeleton;
   bool weights = false;
   int max_bones_per_vertex = static_cast<int>(ranges::max_bones_per_vertex.default_value);
-  double falloff = ranges::falloff.default_value;
+  double sharpness = ranges::sharpness.default_value;
+  double minimum_weight = ranges::minimum_weight.default_value;
   double influence_ratio = ranges::influence_ratio.default_value;
 };
 
@@ -138,7 +139,9 @@ const Numeric_option numeric_options[] = {
      "the longest principal extent / 128"},
     {"--reeb-intervals", "N", ranges::number_of_reeb_intervals, "intervals of the Reeb graph reported for comparison"},
     {"--max-bones", "K", ranges::max_bones_per_vertex, "skinning: bones that may influence one vertex"},
-    {"--falloff", "P", ranges::falloff, "skinning: exponent of the inverse-distance weights"},
+    {"--sharpness", "Q", ranges::sharpness,
+     "skinning: exponent of the diffused weights (larger: sharper transitions at the joints)"},
+    {"--min-weight", "W", ranges::minimum_weight, "skinning: weights under W of a vertex's total are dropped"},
     {"--influence-ratio", "S", ranges::influence_ratio,
      "skinning: a bone pulls a vertex up to S times the nearest bone's distance"},
 };
@@ -281,7 +284,8 @@ Options parse_options(int argc, char** argv)
     else if(a == "--skeleton") o.skeleton = value();
     else if(a == "--weights") o.weights = true;
     else if(a == "--max-bones") o.max_bones_per_vertex = parse_number<int>(a, value());
-    else if(a == "--falloff") o.falloff = parse_number<double>(a, value());
+    else if(a == "--sharpness") o.sharpness = parse_number<double>(a, value());
+    else if(a == "--min-weight") o.minimum_weight = parse_number<double>(a, value());
     else if(a == "--influence-ratio") o.influence_ratio = parse_number<double>(a, value());
     else if(!a.empty() && a[0] == '-')
       throw Usage_error("unknown option " + a + " (see --help)");
@@ -358,6 +362,7 @@ struct Skinning
   std::vector<int> segment; // the bone of largest weight of each vertex
   gs::Skinning_report report;
   const Mesh& mesh;
+  std::string input; // the mesh file
 };
 
 void compute_skinning(const Options& o, const std::string& input, const gs::Control_skeleton<Point>& control,
@@ -372,7 +377,8 @@ void compute_skinning(const Options& o, const std::string& input, const gs::Cont
         mesh, control,
         boost::make_iterator_property_map(skinning.weights.begin(), get(CGAL::vertex_index, mesh)),
         params::combine(params::resolution(o.resolution), params::fill_holes(o.fill_holes),
-                        params::max_bones_per_vertex(o.max_bones_per_vertex), params::falloff(o.falloff),
+                        params::max_bones_per_vertex(o.max_bones_per_vertex), params::sharpness(o.sharpness),
+                        params::minimum_weight(o.minimum_weight),
                         params::influence_ratio(o.influence_ratio),
                         params::bone_segmentation_map(
                             boost::make_iterator_property_map(skinning.segment.begin(), get(CGAL::vertex_index, mesh)))));
@@ -383,12 +389,47 @@ void compute_skinning(const Options& o, const std::string& input, const gs::Cont
   }
 }
 
+// For each point of the mesh file `path` (a format CGAL reads), the mesh vertex at the same
+// position; a point the repair dropped (isolated, or only in degenerate faces) takes the
+// nearest vertex. The repair of a file that is not a clean manifold merges, splits and drops
+// points, so the mesh's vertex numbers are not the file's: weights are written by the file's.
+std::vector<std::size_t> mesh_vertex_of_file_points(const std::string& path, const Mesh& mesh)
+{
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  if(!CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false)))
+    throw Usage_error(path + ": cannot be read again to number the weights by its vertices");
+  std::map<Point, std::size_t> vertex_at;
+  for(vertex_descriptor v : vertices(mesh))
+    vertex_at.emplace(mesh.point(v), std::size_t(v));
+  std::vector<std::size_t> vertex_of(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    if(const auto found = vertex_at.find(points[i]); found != vertex_at.end())
+    {
+      vertex_of[i] = found->second;
+      continue;
+    }
+    double best = HUGE_VAL; // rare (dropped points): a linear scan
+    for(vertex_descriptor v : vertices(mesh))
+      if(const double d = CGAL::squared_distance(points[i], mesh.point(v)); d < best)
+      {
+        best = d;
+        vertex_of[i] = std::size_t(v);
+      }
+  }
+  return vertex_of;
+}
+
 // The report's "skinning" and "weights": the settings and costs, and the non-zero weights
 // as three parallel arrays (vertex, bone, weight), vertex by vertex, largest weight first.
+// Vertices are numbered as in the input file when CGAL reads its format (the mesh's own
+// numbering for the scene formats read through Assimp).
 void add_skinning_json(const Options& o, const Skinning& skinning, nlohmann::json& json)
 {
   const gs::Skinning_report& r = skinning.report;
-  json["skinning"] = {{"max_bones_per_vertex", o.max_bones_per_vertex}, {"falloff", o.falloff},
+  json["skinning"] = {{"max_bones_per_vertex", o.max_bones_per_vertex}, {"sharpness", o.sharpness},
+                      {"minimum_weight", o.minimum_weight},
                       {"influence_ratio", o.influence_ratio}, {"resolution", o.resolution},
                       {"voxel_size", r.voxel_size}, {"solid_voxels", r.solid_voxels},
                       {"voxel_visits", r.voxel_visits},
@@ -396,16 +437,21 @@ void add_skinning_json(const Options& o, const Skinning& skinning, nlohmann::jso
                       {"milliseconds", r.milliseconds}};
   if(!o.weights)
     return;
+  std::vector<std::size_t> mesh_vertex(skinning.weights.size());
+  for(std::size_t v = 0; v < mesh_vertex.size(); ++v)
+    mesh_vertex[v] = v;
+  if(!is_scene_file(skinning.input))
+    mesh_vertex = mesh_vertex_of_file_points(skinning.input, skinning.mesh);
   std::vector<std::size_t> vertex, bone;
   std::vector<float> weight;
-  for(std::size_t v = 0; v < skinning.weights.size(); ++v)
-    for(std::size_t i = 0; i < skinning.weights[v].size(); ++i)
+  for(std::size_t v = 0; v < mesh_vertex.size(); ++v)
+    for(std::size_t i = 0; i < skinning.weights[mesh_vertex[v]].size(); ++i)
     {
       vertex.push_back(v);
-      bone.push_back(skinning.weights[v].bone[i]);
-      weight.push_back(skinning.weights[v].weight[i]);
+      bone.push_back(skinning.weights[mesh_vertex[v]].bone[i]);
+      weight.push_back(skinning.weights[mesh_vertex[v]].weight[i]);
     }
-  json["weights"] = {{"vertex", vertex}, {"bone", bone}, {"weight", weight}};
+  json["weights"] = {{"vertices", mesh_vertex.size()}, {"vertex", vertex}, {"bone", bone}, {"weight", weight}};
 }
 
 // Reads any mesh CGAL reads, and FBX, glTF/GLB and DAE files through Assimp (a file that is
@@ -561,7 +607,7 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
   {
     throw Usage_error(input + ": " + e.what());
   }
-  Skinning skinning{{}, {}, {}, mesh};
+  Skinning skinning{{}, {}, {}, mesh, input};
   // A given skeleton is there to be skinned: its report always has the weights' summary.
   const bool skin = given_skeleton || o.weights || to_gltf || o.svg_stage == "weights";
   if(skin)

@@ -54,7 +54,7 @@ int main(int argc, char* argv[])
     auto segment = mesh.add_property_map<Mesh::Vertex_index, int>("v:bone", -1).first;
     const GS::Skinning_report report = GS::compute_skinning_weights(
         mesh, control, weights,
-        GS::parameters::combine(GS::parameters::max_bones_per_vertex(4), GS::parameters::falloff(2.0),
+        GS::parameters::combine(GS::parameters::max_bones_per_vertex(4), GS::parameters::sharpness(2.5),
                                 GS::parameters::bone_segmentation_map(segment)));
 
     // Mesh, armature and weights, for an animation tool.

@@ -5,13 +5,16 @@
 #define CGAL_GEODESIC_SKELETON_COMPUTE_SKINNING_WEIGHTS_H
 
 /// \file compute_skinning_weights.h
-/// Skinning weights of a mesh for a control skeleton, by geodesic voxel binding.
+/// Skinning weights of a mesh for a control skeleton: bone heat, with the solid of the mesh
+/// deciding which bone sees a vertex.
 
 #include <CGAL/Geodesic_skeleton/Bone_weights.h>
 #include <CGAL/Geodesic_skeleton/Control_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
+#include <CGAL/Geodesic_skeleton/internal/skinning/heat_sources.h>
 #include <CGAL/Geodesic_skeleton/internal/skinning/skinning_fields.h>
+#include <CGAL/Geodesic_skeleton/internal/skinning/surface_heat.h>
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 #include <CGAL/Geodesic_skeleton/voxelize.h>
@@ -45,6 +48,9 @@ struct Skinning_report
   /// Vertices bound to the bone nearest in straight line, because no bone is in the part
   /// of the solid they touch (a detached piece without a bone, such as a loose eye).
   std::size_t vertices_bound_in_straight_line = 0;
+  /// Whether the heat diffused over the surface; false if its solve failed (it should not:
+  /// the system is positive definite), when each vertex follows the bone that heats it.
+  bool heat_diffused = true;
   double milliseconds = 0;        ///< wall-clock time of the call
 };
 
@@ -82,23 +88,32 @@ void check_bones(const Control_skeleton<Point>& skeleton, const char* caller)
     throw std::invalid_argument(std::string(caller) + ": too many bones");
 }
 
-// Keeps the `k` largest weights of a vertex.
-inline void keep_largest(Bone_weights& weights, std::size_t k, std::uint32_t bone, float weight)
+// Raises each joint's weight (the sum over the bones that leave it, which all turn about
+// it) to the power `exponent`, sharing it among those bones as before: the joint that leads
+// keeps its lead and the blend around a joint narrows.
+inline void sharpen(Bone_weights& weights, double exponent, const std::vector<std::size_t>& joint_of_bone)
 {
-  if(weights.size() < k)
-  {
-    weights.push_back(bone, weight);
-    return;
-  }
-  std::size_t smallest = 0;
-  for(std::size_t i = 1; i < weights.size(); ++i)
-    if(weights.weight[i] < weights.weight[smallest])
-      smallest = i;
-  if(weight > weights.weight[smallest])
-  {
-    weights.bone[smallest] = bone;
-    weights.weight[smallest] = weight;
-  }
+  std::array<double, Bone_weights::capacity> joint_total{};
+  for(std::size_t i = 0; i < weights.size(); ++i)
+    for(std::size_t j = 0; j < weights.size(); ++j)
+      if(joint_of_bone[weights.bone[j]] == joint_of_bone[weights.bone[i]])
+        joint_total[i] += weights.weight[j];
+  for(std::size_t i = 0; i < weights.size(); ++i)
+    weights.weight[i] = float(weights.weight[i] * std::pow(joint_total[i], exponent - 1));
+}
+
+// Drops the weights under `minimum` times the vertex's total, but never its largest.
+inline void drop_small_weights(Bone_weights& weights, double minimum)
+{
+  const double total = weights.total();
+  float largest = 0;
+  for(std::size_t i = 0; i < weights.size(); ++i)
+    largest = std::max(largest, weights.weight[i]);
+  Bone_weights kept;
+  for(std::size_t i = 0; i < weights.size(); ++i)
+    if(weights.weight[i] >= minimum * total || weights.weight[i] == largest)
+      kept.push_back(weights.bone[i], weights.weight[i]);
+  weights = kept;
 }
 
 // Sorts the pairs by decreasing weight (bone index for ties) and scales them to sum 1.
@@ -126,16 +141,23 @@ inline void normalise(Bone_weights& weights)
 /// `max_bones_per_vertex` bones of `skeleton`: non-negative, summing to 1, for linear
 /// blend skinning (as glTF 2.0 and every animation tool use them).
 ///
-/// The method is geodesic voxel binding (after Dionne and de Lasa, <i>Geodesic Voxel
-/// Binding for Production Character Meshes</i>, SCA 2013): distances from the bones run
-/// through the voxels of the mesh's solid (`voxelize()`), and the weight of bone `b` at a
-/// vertex is `w_b = max(0, (d_b + 1/2)^(-p) - (s (d1 + 1/2))^(-p))`, with `d_b` its
-/// distance to bone `b`, `d1` to the nearest bone (in voxels), `p` = `falloff` and `s` =
-/// `influence_ratio`; the `max_bones_per_vertex` largest are kept and scaled to sum 1. A
-/// vertex that no bone's search reaches (a detached piece without a bone) is bound with
-/// weight 1 to the bone nearest in straight line. The searches, the reading of a field at
-/// a vertex and what bounds the cost are described in the manual, section
-/// \ref manual_skinning_method.
+/// The method is bone heat (Baran and Popovic, <i>Automatic Rigging and Animation of 3D
+/// Characters</i>, SIGGRAPH 2007) with the solid deciding what a bone sees. Distances from the
+/// bones run through the voxels of the mesh's solid (`voxelize()`, as in Dionne and de Lasa's
+/// geodesic voxel binding); a bone sees a vertex when that distance is about the straight one.
+/// Each vertex is heated by the bone nearest in straight line among those that see it (the
+/// bone nearest through the solid when none does; the bone nearest in straight line in a
+/// detached piece that no bone's search reaches), with heat `A / d^2` (`A` the vertex's area,
+/// `d` the distance to the bone), and the heat diffuses over the surface: the weights of bone
+/// `b` solve `(L + diag(A / d^2)) w_b = diag(A / d^2) [heated by b]`, with `L` the cotangent
+/// Laplacian (obtuse angles' negative cotangents clamped to 0, so that the weights stay in
+/// [0, 1]). The system is positive definite on any mesh (open, in pieces, with degenerate
+/// triangles), so the solve does not fail where bone heat does, and all lengths are in
+/// voxels, so the weights do not depend on the mesh's scale. The `max_bones_per_vertex`
+/// largest weights are kept and each joint's (the sum over the bones leaving it) raised to
+/// the power `sharpness` (artists blend over a narrower band than the heat does), those under `minimum_weight` of a vertex's total are
+/// dropped, and the rest scaled to sum 1. The manual,
+/// section \ref manual_skinning_method, gives the calibration on artists' weights.
 ///
 /// The skeleton may be any: from `extract_control_skeleton()` or `split_into_bones()`, or
 /// filled by hand (joints with their points, bones as edges from parent to child; `points`
@@ -160,20 +182,28 @@ inline void normalise(Bone_weights& weights)
 ///     \cgalParamType{`int`}
 ///     \cgalParamDefault{4, what glTF's `JOINTS_0`/`WEIGHTS_0` hold}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{falloff}
-///     \cgalParamDescription{the exponent `p` above, in [0.5, 16] (package parameter)}
+///   \cgalParamNBegin{sharpness}
+///     \cgalParamDescription{the exponent the diffused weights are raised to, in [1, 16]
+///                           (package parameter)}
 ///     \cgalParamType{`double`}
-///     \cgalParamDefault{2: inverse square distance; larger gives sharper transitions at
-///                       the joints}
+///     \cgalParamDefault{2.5: the sharpest blend with which a limb bent by 60 degrees
+///                       stretches no edge of its surface past twice its length (artists'
+///                       weights are matched best at 4, section \ref manual_skinning_method);
+///                       1 is bone heat's blend}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{minimum_weight}
+///     \cgalParamDescription{weights under this share of a vertex's total are dropped, in
+///                           [0, 0.5] (package parameter)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{0.05}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{influence_ratio}
-///     \cgalParamDescription{`s` above, in [1.05, 100] (package parameter)}
+///     \cgalParamDescription{a bone's search through the solid stops where it is this many
+///                           times as far as the nearest bone, in [1.05, 100] (package
+///                           parameter): only bones that near may heat a vertex}
 ///     \cgalParamType{`double`}
-///     \cgalParamDefault{2: a bone influences vertices up to twice as far from it as from
-///                       the nearest bone, so the blend around a joint of a limb of radius
-///                       r spans about 1.7 r on each side}
-///     \cgalParamExtra{A larger ratio blends more widely and costs more:
-///                     `Skinning_report::voxel_visits`.}
+///     \cgalParamDefault{2}
+///     \cgalParamExtra{A larger ratio costs more: `Skinning_report::voxel_visits`.}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{bone_segmentation_map}
 ///     \cgalParamDescription{receives the bone of largest weight of each vertex (the hard
@@ -187,7 +217,7 @@ inline void normalise(Bone_weights& weights)
 ///     \cgalParamType{as for `voxelize()`}
 ///     \cgalParamDefault{as for `voxelize()` (resolution `default_voxel_resolution`, 64)}
 ///     \cgalParamExtra{The memory need is checked first: about 13 bytes per voxel of the
-///                     solid's box, 16 per solid voxel and 112 per vertex, besides
+///                     solid's box, 16 per solid voxel and about 900 per vertex (the sparse factorisation), besides
 ///                     `voxelize()`'s.}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_index_map}
@@ -199,7 +229,7 @@ inline void normalise(Bone_weights& weights)
 /// \cgalNamedParamsEnd
 ///
 /// \returns what was done: the voxels, the work of the searches, the vertices bound in
-///          straight line, the time.
+///          straight line, whether the heat diffused, the time.
 /// \pre the skeleton has at least one bone, every point is finite; the mesh satisfies `voxelize()`'s preconditions.
 /// \throws std::invalid_argument when a precondition does not hold or a parameter is out of
 ///         range (the message names it); what `voxelize()` throws.
@@ -207,8 +237,10 @@ inline void normalise(Bone_weights& weights)
 ///
 /// \b Complexity: `voxelize()`'s, plus O(V) for the nearest-bone search over the V solid
 /// voxels (a bucket queue), plus O(V_b) per bone for the V_b voxels its bounded search visits
-/// (in total a small multiple of V: `Skinning_report::voxel_visits`), plus O(N (B_v + 1))
-/// for N vertices and B_v bones reaching a vertex; O(V_box + V + N) memory.
+/// (in total a small multiple of V: `Skinning_report::voxel_visits`), plus O(N B_v P) for
+/// N vertices, B_v bones reaching a vertex and P points per bone polyline, plus the sparse
+/// Cholesky factorisation of the N x N system (about O(N^1.5) on a surface) and one solve
+/// per bone (O(F) for the F non-zeros of the factor); O(V_box + V + F) memory.
 template <typename TriangleMesh, typename Point, typename WeightMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control_skeleton<Point>& skeleton,
@@ -227,8 +259,13 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
       std::size_t(choose_parameter(get_parameter(np, internal_np::max_bones_per_vertex_tag),
                                    int(ranges::max_bones_per_vertex.default_value))),
       caller);
-  const double p = internal::checked_parameter(
-      ranges::falloff, double(choose_parameter(get_parameter(np, internal_np::falloff_tag), ranges::falloff.default_value)),
+  const double sharpness = internal::checked_parameter(
+      ranges::sharpness,
+      double(choose_parameter(get_parameter(np, internal_np::sharpness_tag), ranges::sharpness.default_value)),
+      caller);
+  const double minimum_weight = internal::checked_parameter(
+      ranges::minimum_weight,
+      double(choose_parameter(get_parameter(np, internal_np::minimum_weight_tag), ranges::minimum_weight.default_value)),
       caller);
   const double s = internal::checked_parameter(
       ranges::influence_ratio,
@@ -249,7 +286,7 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   const std::size_t n = num_vertices(mesh);
   {
     const internal::Grid_layout layout(grid.bounding_box().grown(1));
-    internal::require_memory(13. * double(layout.volume()) + 16. * double(report.solid_voxels) + 112. * double(n),
+    internal::require_memory(13. * double(layout.volume()) + 16. * double(report.solid_voxels) + 900. * double(n),
                              limit, layout, caller, "the distance fields of a grid");
   }
   const internal::Solid_voxels solid(grid);
@@ -285,25 +322,16 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   internal::Bucket_queue queue;
   internal::voxel_dijkstra(solid, all_seeds, nearest, reached, queue,
                            [](std::uint32_t, internal::Voxel_distance) { return true; });
-  // (s (d1 + 1/2))^-p at each vertex, the term that makes a bone's weight zero where it is s
-  // times as far as the nearest bone (d1 in voxels, read in float precision; 0 where no bone
-  // reaches the vertex). Computed once here, not once per bone that reaches the vertex.
-  std::vector<double> zero_weight_term(n, 0.);
   // The solid voxels at a corner of a cell with vertices: the only ones read at vertices.
   std::vector<std::uint8_t> read_at_vertices(solid.size(), 0);
   for(std::size_t cell = 0; cell < solid.layout.volume(); ++cell)
     if(cells.has_vertices(cell))
-    {
-      cells.read_cell(solid, cell, nearest, [&](std::uint32_t v, double d) {
-        zero_weight_term[v] = std::pow(s * (double(float(d)) + 0.5), -p);
-      });
       for(std::ptrdiff_t offset : cells.corner_offsets)
         if(const std::int32_t u = solid.solid_of_cell[std::size_t(std::ptrdiff_t(cell) + offset)]; u >= 0)
           read_at_vertices[std::size_t(u)] = 1;
-    }
 
-  // One bounded search per bone; each vertex keeps its k largest weights.
-  std::vector<Bone_weights> weights(n);
+  // One bounded search per bone; each vertex finds the bone that heats it.
+  internal::Heat_source_finder finder(n);
   std::vector<internal::Voxel_distance> distance(solid.size(), internal::unreached);
   // A bone's search stops at a voxel where d_b + 1/2 >= s (d1 + 1/2) + 1 (in voxels).
   std::vector<internal::Voxel_distance> stop(solid.size());
@@ -333,30 +361,40 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
         }
     for(std::uint32_t cell : touched_cells)
       cells.read_cell(solid, cell, distance, [&](std::uint32_t v, double d) {
-        const double w = std::pow(d + 0.5, -p) - zero_weight_term[v];
-        if(w > 0)
-          internal::keep_largest(weights[v], k, std::uint32_t(b), float(w));
+        finder.add(v, std::uint32_t(b), d,
+                   [&] { return internal::distance_to_polyline(cells.grid_point[v], polylines[b]); });
       });
     for(std::uint32_t u : reached)
       distance[u] = internal::unreached;
   }
 
+  internal::Heat_sources sources = finder.sources();
   for(std::size_t v = 0; v < n; ++v)
-  {
-    if(weights[v].empty())
+    if(sources.bone[v] == internal::Heat_source_finder::none)
     {
       // No bone in the vertex's part of the solid: the bone nearest in straight line.
-      double best = HUGE_VAL;
-      std::uint32_t nearest_bone = 0;
+      sources.distance[v] = HUGE_VAL;
       for(std::size_t b = 0; b < bones; ++b)
-        if(const double d = internal::distance_to_polyline(cells.grid_point[v], polylines[b]); d < best)
+        if(const double d = internal::distance_to_polyline(cells.grid_point[v], polylines[b]); d < sources.distance[v])
         {
-          best = d;
-          nearest_bone = std::uint32_t(b);
+          sources.distance[v] = d;
+          sources.bone[v] = std::uint32_t(b);
         }
-      weights[v].push_back(nearest_bone, 1.f);
       ++report.vertices_bound_in_straight_line;
     }
+
+  std::vector<std::size_t> joint_of_bone(bones);
+  for(std::size_t b = 0; b < bones; ++b)
+    joint_of_bone[b] = std::size_t(source(numbered[b], skeleton));
+  std::vector<Bone_weights> weights(n);
+  report.heat_diffused = internal::diffuse_bone_heat(cells.grid_point, internal::triangles_of(mesh, vim), sources,
+                                                     bones, k, weights);
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    internal::sharpen(weights[v], sharpness, joint_of_bone);
+    internal::drop_small_weights(weights[v], minimum_weight);
+    if(weights[v].empty()) // the diffusion failed (it should not): the heating bone alone
+      weights[v].push_back(sources.bone[v], 1.f);
     internal::normalise(weights[v]);
     put(weight_output, vertex_of[v], weights[v]);
     if constexpr(!is_default_parameter<NamedParameters, internal_np::bone_segmentation_map_t>::value)

@@ -124,8 +124,11 @@ inline constexpr Parameter_range number_of_base_vertices{"number_of_base_vertice
                                                          false};
 /// `compute_skinning_weights()`: bones that may influence one vertex (glTF reads 4 per set).
 inline constexpr Parameter_range max_bones_per_vertex{"max_bones_per_vertex", 1, 8, 4, true, false};
-/// `compute_skinning_weights()`: the exponent of the inverse-distance weights.
-inline constexpr Parameter_range falloff{"falloff", 0.5, 16, 2, false, false};
+/// `compute_skinning_weights()`: the exponent the diffused weights are raised to before they
+/// are scaled to sum 1 (larger: sharper transitions at the joints).
+inline constexpr Parameter_range sharpness{"sharpness", 1, 16, 2.5, false, false};
+/// `compute_skinning_weights()`: weights under this share of a vertex's total are dropped.
+inline constexpr Parameter_range minimum_weight{"minimum_weight", 0, 0.5, 0.05, false, false};
 /// `compute_skinning_weights()`: a bone influences a vertex only when its geodesic distance is
 /// less than this many times the nearest bone's.
 inline constexpr Parameter_range influence_ratio{"influence_ratio", 1.05, 100, 2, false, false};

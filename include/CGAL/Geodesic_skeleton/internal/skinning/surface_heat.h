@@ -1,0 +1,190 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_GEODESIC_SKELETON_INTERNAL_SKINNING_SURFACE_HEAT_H
+#define CGAL_GEODESIC_SKELETON_INTERNAL_SKINNING_SURFACE_HEAT_H
+
+// The diffusion step of compute_skinning_weights(): bone heat over the surface (after Baran
+// and Popovic, Automatic Rigging and Animation of 3D Characters, SIGGRAPH 2007). Each vertex
+// v is heated by one bone, p(v), at distance d(v); the weight of bone b solves
+//   (L + diag(c A / d^2)) w_b = diag(c A / d^2) [p == b],
+// with L the cotangent Laplacian of the surface and A the vertex areas. The weights are in
+// [0, 1] and sum to 1 at every vertex (L has non-negative edge weights: the maximum
+// principle), and the matrix is positive definite whatever the mesh (every diagonal entry
+// has a positive heat term), so the solve never fails where bone heat does. All lengths
+// are in voxels, so the weights do not depend on the mesh's scale.
+
+#include <CGAL/Geodesic_skeleton/Bone_weights.h>
+#include <CGAL/Geodesic_skeleton/internal/vec3.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <vector>
+
+namespace CGAL {
+namespace Geodesic_skeleton {
+namespace internal {
+
+// What heats each vertex: its bone and the distance to it (voxels).
+struct Heat_sources
+{
+  std::vector<std::uint32_t> bone;
+  std::vector<double> distance;
+};
+
+// Keeps the `k` largest weights of a vertex.
+inline void keep_largest(Bone_weights& weights, std::size_t k, std::uint32_t bone, float weight)
+{
+  if(weights.size() < k)
+  {
+    weights.push_back(bone, weight);
+    return;
+  }
+  std::size_t smallest = 0;
+  for(std::size_t i = 1; i < weights.size(); ++i)
+    if(weights.weight[i] < weights.weight[smallest])
+      smallest = i;
+  if(weight > weights.weight[smallest])
+  {
+    weights.bone[smallest] = bone;
+    weights.weight[smallest] = weight;
+  }
+}
+
+// The faces of `mesh` as triangles of vertex indices (a polygon as a fan).
+template <typename FaceGraph, typename VertexIndexMap>
+std::vector<std::array<std::uint32_t, 3>> triangles_of(const FaceGraph& mesh, const VertexIndexMap& vim)
+{
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<std::uint32_t> corners;
+  for(auto f : faces(mesh))
+  {
+    corners.clear();
+    for(auto h : halfedges_around_face(halfedge(f, mesh), mesh))
+      corners.push_back(std::uint32_t(get(vim, target(h, mesh))));
+    for(std::size_t i = 1; i + 1 < corners.size(); ++i)
+      triangles.push_back({corners[0], corners[i], corners[i + 1]});
+  }
+  return triangles;
+}
+
+// The cotangent of a triangle's angle at `apex`, clamped to [0, 1000]: negative cotangents
+// (obtuse angles) would break the maximum principle, and degenerate triangles would give
+// infinite ones.
+inline double clamped_cotangent(const Vec3& apex, const Vec3& a, const Vec3& b)
+{
+  const Vec3 u = sub(a, apex), v = sub(b, apex);
+  const double cross_norm = norm3(cross3(u, v));
+  const double dot_uv = dot3(u, v);
+  if(!(cross_norm > 0))
+    return 0;
+  return std::clamp(dot_uv / cross_norm, 0., 1000.);
+}
+
+// L + diag(heat): the cotangent Laplacian (L(i, i) = the sum of the edge weights of i,
+// L(i, j) = -w_ij) of triangles given as vertex index triples over `points`, screened by the
+// heat of each vertex, `heat_of_area(v, A)` for its area A (a third of each incident
+// triangle's), which `heat` receives.
+template <typename HeatOfArea>
+Eigen::SparseMatrix<double> screened_cotangent_laplacian(const std::vector<Vec3>& points,
+                                                         const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                                                         HeatOfArea heat_of_area, std::vector<double>& heat)
+{
+  const std::size_t n = points.size();
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(6 * triangles.size() + n);
+  std::vector<double> diagonal(n, 0.), area(n, 0.);
+  for(const auto& t : triangles)
+  {
+    for(int corner = 0; corner < 3; ++corner)
+    {
+      const std::uint32_t apex = t[std::size_t(corner)], i = t[std::size_t((corner + 1) % 3)],
+                          j = t[std::size_t((corner + 2) % 3)];
+      const double w = 0.5 * clamped_cotangent(points[apex], points[i], points[j]);
+      if(w == 0)
+        continue;
+      entries.emplace_back(i, j, -w);
+      entries.emplace_back(j, i, -w);
+      diagonal[i] += w;
+      diagonal[j] += w;
+    }
+    const double third = norm3(cross3(sub(points[t[1]], points[t[0]]), sub(points[t[2]], points[t[0]]))) / 6;
+    for(std::uint32_t v : t)
+      area[v] += third;
+  }
+  heat.resize(n);
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    heat[v] = heat_of_area(v, area[v]);
+    entries.emplace_back(Eigen::Index(v), Eigen::Index(v), diagonal[v] + heat[v]);
+  }
+  const Eigen::Index size = Eigen::Index(n);
+  Eigen::SparseMatrix<double> matrix(size, size);
+  matrix.setFromTriplets(entries.begin(), entries.end());
+  return matrix;
+}
+
+// Diffuses the bones' heat over the surface and keeps, per vertex, the `k` largest weights
+// (not yet normalised) of `bones` bones, with c = 1 (bone heat's). Distances below
+// `nearest_distance` voxels count as that (a vertex on a bone), areas below `smallest_area`
+// square voxels as that (a vertex of degenerate triangles only, or of none, still feels
+// its heat source). Returns false when the factorisation fails (it should not: the matrix is
+// positive definite), leaving `weights` untouched.
+inline bool diffuse_bone_heat(const std::vector<Vec3>& points,
+                              const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                              const Heat_sources& sources, std::size_t bones, std::size_t k,
+                              std::vector<Bone_weights>& weights)
+{
+  constexpr double heat_constant = 1, nearest_distance = 0.1, smallest_area = 1e-6, negligible = 1e-4;
+  const std::size_t n = points.size();
+  std::vector<double> heat;
+  const Eigen::SparseMatrix<double> system =
+      screened_cotangent_laplacian(points, triangles, [&](std::size_t v, double area) {
+        const double d = std::max(sources.distance[v], nearest_distance);
+        return heat_constant * std::max(area, smallest_area) / (d * d);
+      }, heat);
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(system);
+  if(solver.info() != Eigen::Success)
+    return false;
+  // The bones that heat some vertex; the others have weight 0 everywhere.
+  std::vector<std::vector<std::uint32_t>> heated(bones);
+  for(std::size_t v = 0; v < n; ++v)
+    heated[sources.bone[v]].push_back(std::uint32_t(v));
+  // A few bones per solve: one pass over the factor serves them all.
+  constexpr std::size_t block = 8;
+  std::vector<std::uint32_t> batch;
+  for(std::size_t first = 0; first < bones;)
+  {
+    batch.clear();
+    for(; first < bones && batch.size() < block; ++first)
+      if(!heated[first].empty())
+        batch.push_back(std::uint32_t(first));
+    if(batch.empty())
+      continue;
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(Eigen::Index(n), Eigen::Index(batch.size()));
+    for(std::size_t column = 0; column < batch.size(); ++column)
+      for(std::uint32_t v : heated[batch[column]])
+        rhs(v, Eigen::Index(column)) = heat[v];
+    const Eigen::MatrixXd solution = solver.solve(rhs);
+    for(std::size_t column = 0; column < batch.size(); ++column)
+      for(std::size_t v = 0; v < n; ++v)
+        if(const double w = solution(Eigen::Index(v), Eigen::Index(column)); w > negligible)
+          keep_largest(weights[v], k, batch[column], float(w));
+  }
+  return true;
+}
+
+} // namespace internal
+} // namespace Geodesic_skeleton
+} // namespace CGAL
+
+#endif // CGAL_GEODESIC_SKELETON_INTERNAL_SKINNING_SURFACE_HEAT_H
