@@ -143,7 +143,7 @@ const Numeric_option numeric_options[] = {
      "skinning: exponent of the diffused weights (larger: sharper transitions at the joints)"},
     {"--min-weight", "W", ranges::minimum_weight, "skinning: weights under W of a vertex's total are dropped"},
     {"--influence-ratio", "S", ranges::influence_ratio,
-     "skinning: a bone pulls a vertex up to S times the nearest bone's distance"},
+     "skinning: bones up to S times as far as the nearest (through the solid) may heat a vertex"},
 };
 
 const Numeric_option& numeric_option(const std::string& option)

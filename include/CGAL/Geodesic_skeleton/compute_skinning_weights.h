@@ -102,6 +102,15 @@ inline void sharpen(Bone_weights& weights, double exponent, const std::vector<st
     weights.weight[i] = float(weights.weight[i] * std::pow(joint_total[i], exponent - 1));
 }
 
+// Keeps the `k` largest weights.
+inline void keep_largest_bones(Bone_weights& weights, std::size_t k)
+{
+  Bone_weights kept;
+  for(std::size_t i = 0; i < weights.size(); ++i)
+    keep_largest(kept, k, weights.bone[i], weights.weight[i]);
+  weights = kept;
+}
+
 // Drops the weights under `minimum` times the vertex's total, but never its largest.
 inline void drop_small_weights(Bone_weights& weights, double minimum)
 {
@@ -153,11 +162,11 @@ inline void normalise(Bone_weights& weights)
 /// Laplacian (obtuse angles' negative cotangents clamped to 0, so that the weights stay in
 /// [0, 1]). The system is positive definite on any mesh (open, in pieces, with degenerate
 /// triangles), so the solve does not fail where bone heat does, and all lengths are in
-/// voxels, so the weights do not depend on the mesh's scale. The `max_bones_per_vertex`
-/// largest weights are kept and each joint's (the sum over the bones leaving it) raised to
-/// the power `sharpness` (artists blend over a narrower band than the heat does), those under `minimum_weight` of a vertex's total are
-/// dropped, and the rest scaled to sum 1. The manual,
-/// section \ref manual_skinning_method, gives the calibration on artists' weights.
+/// voxels, so the weights do not depend on the mesh's scale. Each joint's weight (the sum
+/// over the bones leaving it) is raised to the power `sharpness` (artists blend over a
+/// narrower band than the heat does), the `max_bones_per_vertex` largest weights are kept,
+/// those under `minimum_weight` of a vertex's total dropped, and the rest scaled to sum 1.
+/// The manual, section \ref manual_skinning_method, gives the calibration on artists' weights.
 ///
 /// The skeleton may be any: from `extract_control_skeleton()` or `split_into_bones()`, or
 /// filled by hand (joints with their points, bones as edges from parent to child; `points`
@@ -386,12 +395,15 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   std::vector<std::size_t> joint_of_bone(bones);
   for(std::size_t b = 0; b < bones; ++b)
     joint_of_bone[b] = std::size_t(source(numbered[b], skeleton));
+  // The diffusion keeps all the bones a vertex holds, so that a joint's share counts all its
+  // bones before the sharpening; then the k largest are kept.
   std::vector<Bone_weights> weights(n);
   report.heat_diffused = internal::diffuse_bone_heat(cells.grid_point, internal::triangles_of(mesh, vim), sources,
-                                                     bones, k, weights);
+                                                     bones, Bone_weights::capacity, weights);
   for(std::size_t v = 0; v < n; ++v)
   {
     internal::sharpen(weights[v], sharpness, joint_of_bone);
+    internal::keep_largest_bones(weights[v], k);
     internal::drop_small_weights(weights[v], minimum_weight);
     if(weights[v].empty()) // the diffusion failed (it should not): the heating bone alone
       weights[v].push_back(sources.bone[v], 1.f);

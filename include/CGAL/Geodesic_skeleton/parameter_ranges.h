@@ -129,8 +129,8 @@ inline constexpr Parameter_range max_bones_per_vertex{"max_bones_per_vertex", 1,
 inline constexpr Parameter_range sharpness{"sharpness", 1, 16, 2.5, false, false};
 /// `compute_skinning_weights()`: weights under this share of a vertex's total are dropped.
 inline constexpr Parameter_range minimum_weight{"minimum_weight", 0, 0.5, 0.05, false, false};
-/// `compute_skinning_weights()`: a bone influences a vertex only when its geodesic distance is
-/// less than this many times the nearest bone's.
+/// `compute_skinning_weights()`: a bone may heat a vertex only when its distance through the
+/// solid is less than this many times the nearest bone's.
 inline constexpr Parameter_range influence_ratio{"influence_ratio", 1.05, 100, 2, false, false};
 
 } // namespace parameter_ranges
