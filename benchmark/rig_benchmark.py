@@ -247,13 +247,12 @@ def skin_character(skeletonize, data, split, i, out, options, scale):
 
 
 def bone_heat_weights(path, rig, vertices):
-    result = json.load(open(path))
+    """Per vertex and joint, the weights of a bone_heat_weights.py output (pairs [joint name, w])."""
+    column = {name: rig.owner[j] for j, name in enumerate(rig.names)}
     weights = np.zeros((vertices, len(rig.names)))
-    index = {name: j for j, name in enumerate(result.get('joints', rig.names))}
-    for v, pairs in enumerate(result['weights']):
-        for joint, w in pairs:
-            j = joint if isinstance(joint, int) else index[joint]
-            weights[v, rig.owner[rig.names.index(result['joints'][j]) if 'joints' in result else j]] += w
+    for v, pairs in enumerate(json.load(open(path))['weights']):
+        for name, w in pairs:
+            weights[v, column[name]] += w
     return weights
 
 
