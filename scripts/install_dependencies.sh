@@ -5,7 +5,7 @@
 #   bash scripts/install_dependencies.sh [--with-blender]
 set -euo pipefail
 
-packages=(g++ cmake make libcgal-dev libcgal-demo libboost-graph-dev libboost-test-dev
+packages=(g++ cmake make ninja-build libcgal-dev libcgal-demo libboost-graph-dev libboost-test-dev
           libeigen3-dev nlohmann-json3-dev doxygen libassimp-dev libtinygltf-dev)
 # --with-blender (the tests): Blender and the numpy its glTF importer needs, to import and
 # pose the skinned glTF files that skeletonize writes.

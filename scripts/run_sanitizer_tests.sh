@@ -24,7 +24,12 @@ build=build-sanitize
 # accesses). SANITIZER_FLAGS="..." replaces the whole set, e.g. with "-g1" added for line numbers.
 sanitize="${SANITIZER_FLAGS:--fsanitize=address,undefined -fno-sanitize=null,alignment,pointer-overflow,object-size,vptr -fno-sanitize-recover=all -fno-omit-frame-pointer}"
 # -O1: fast enough for CGAL. No NDEBUG: the package's and CGAL's assertions stay on too.
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Sanitize \
+# Ninja builds the three targets side by side (make would build them one after another).
+
+if [ -f "$build/CMakeCache.txt" ]; then
+  grep -q "^CMAKE_GENERATOR:INTERNAL=Ninja$" "$build/CMakeCache.txt" || rm -rf "$build" # this script's own folder
+fi
+cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Sanitize \
   "-DCMAKE_CXX_FLAGS_SANITIZE=-O1 $sanitize" \
   "-DCMAKE_EXE_LINKER_FLAGS_SANITIZE=$sanitize" \
   -DGEODESIC_SKELETON_BUILD_BENCHMARKS=OFF -DGEODESIC_SKELETON_BUILD_DOC=OFF

@@ -21,7 +21,8 @@ add_executable(geodesic_skeleton_tests ${test_sources})
 # BOOST_AUTO_TEST_SUITE opens. A unit hides an include that one suite forgets and another
 # makes: GEODESIC_SKELETON_UNITY_TESTS=OFF compiles each suite on its own.
 set(pipeline_suites
-  extract_control_skeleton robustness game_characters skinning_weights gltf control_skeleton_json assimp_input)
+  extract_control_skeleton control_skeleton robustness game_characters skinning_weights gltf control_skeleton_json
+  assimp_input)
 foreach(suite IN LISTS GEODESIC_SKELETON_TEST_SUITES)
   if(suite IN_LIST pipeline_suites)
     set_source_files_properties(test_${suite}.cpp PROPERTIES UNITY_GROUP pipeline)

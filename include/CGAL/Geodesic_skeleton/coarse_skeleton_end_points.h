@@ -80,45 +80,14 @@ struct Coarse_skeleton_level_of_detail
   Dense_voxel_grid solid;
 };
 
-/// \ingroup PkgGeodesicSkeletonRef
-/// The skeleton of `mesh` at `resolution`, as far as it sets the level of detail of a
-/// finer grid: the end points of the pruned voxel skeleton (the branches that the level of
-/// detail of that resolution keeps) and the widest sheet of each piece of the voxel
-/// skeleton before pruning (the width that pruning judges the piece's twigs by), in the grid
-/// coordinates of `frame` (usually the finer grid's), and the solid on that grid (the
-/// pieces it joins).
-///
-/// The voxel stages run as `extract_control_skeleton()` runs them on the grid of its level
-/// of detail: `voxelize()`, `distance_transform()`, `thin()` (with the sheet radii, read at
-/// one level and across close levels, and `default_thin_part_radius(resolution)`),
-/// `remove_small_pieces()`, `cut_spurious_cycles()`, then `widest_sheet_radius_of_pieces()`
-/// of the radii read across close levels and `prune_skeleton()` (with the MAT and sheet
-/// radii and those widest sheets as its `piece_radius_map`), with the settings of `np` but
-/// the resolution. The points are voxel centres moved from the coarser grid's frame to `frame`.
-///
-/// \tparam FaceGraph a model of `FaceListGraph`, as for `voxelize()`.
-/// \param mesh the mesh.
-/// \param resolution the resolution of the coarser grid, as `voxelize()`'s `resolution`.
-/// \param frame the grid whose coordinates the points are given in, e.g. the finer grid's
-///        `Dense_voxel_grid::frame()`.
-/// \param np an optional sequence of \ref manual_named_parameters "named parameters": those
-///        of the stages above (`vertex_point_map`, `fill_holes`, `memory_limit`,
-///        `small_piece_fraction`, `spur_length_factor`, `limb_protrusion_factor`, ...); a
-///        `resolution` or `thin_part_radius` in it is not used.
-///
-/// \returns the level of detail, or `std::nullopt` when the mesh encloses no volume at
-///          `resolution` (a shape thinner than a voxel of that grid).
-/// \throws std::invalid_argument for any other bad input or parameter, as the stages do.
-///
-/// \b Complexity: that of the stages on the grid of `resolution`: linear in its voxels and
-/// the mesh's faces, in practice.
-template <typename FaceGraph, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+namespace internal {
+
+// coarse_skeleton_level_of_detail() with the parameters of its stages read into one pack
+// of a fixed type: compiled once per mesh and point map type, whatever pack the caller has.
+template <typename FaceGraph, typename CoarseParameters>
 std::optional<Coarse_skeleton_level_of_detail>
-coarse_skeleton_level_of_detail(const FaceGraph& mesh, int resolution, const Voxel_frame& frame,
-                                const NamedParameters& np = CGAL::parameters::default_values())
+coarse_skeleton_level_of_detail_with(const FaceGraph& mesh, const Voxel_frame& frame, const CoarseParameters& coarse_np)
 {
-  const auto coarse_np = parameters::combine(parameters::resolution(resolution),
-                                             parameters::thin_part_radius(default_thin_part_radius(resolution)), np);
   Dense_voxel_grid solid;
   Voxelized_surface surface;
   try
@@ -160,6 +129,66 @@ coarse_skeleton_level_of_detail(const FaceGraph& mesh, int resolution, const Vox
   for(const Voxel_key& k : internal::graph_end_points(skeleton))
     coarse.end_points.push_back(in_frame(k));
   return coarse;
+}
+
+} // namespace internal
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// The skeleton of `mesh` at `resolution`, as far as it sets the level of detail of a
+/// finer grid: the end points of the pruned voxel skeleton (the branches that the level of
+/// detail of that resolution keeps) and the widest sheet of each piece of the voxel
+/// skeleton before pruning (the width that pruning judges the piece's twigs by), in the grid
+/// coordinates of `frame` (usually the finer grid's), and the solid on that grid (the
+/// pieces it joins).
+///
+/// The voxel stages run as `extract_control_skeleton()` runs them on the grid of its level
+/// of detail: `voxelize()`, `distance_transform()`, `thin()` (with the sheet radii, read at
+/// one level and across close levels, and `default_thin_part_radius(resolution)`),
+/// `remove_small_pieces()`, `cut_spurious_cycles()`, then `widest_sheet_radius_of_pieces()`
+/// of the radii read across close levels and `prune_skeleton()` (with the MAT and sheet
+/// radii and those widest sheets as its `piece_radius_map`), with the settings of `np` but
+/// the resolution. The points are voxel centres moved from the coarser grid's frame to `frame`.
+///
+/// \tparam FaceGraph a model of `FaceListGraph`, as for `voxelize()`.
+/// \param mesh the mesh.
+/// \param resolution the resolution of the coarser grid, as `voxelize()`'s `resolution`.
+/// \param frame the grid whose coordinates the points are given in, e.g. the finer grid's
+///        `Dense_voxel_grid::frame()`.
+/// \param np an optional sequence of \ref manual_named_parameters "named parameters": those
+///        of the stages above (`vertex_point_map`, `fill_holes`, `memory_limit`,
+///        `small_piece_fraction`, `spur_length_factor`, `limb_protrusion_factor`, ...); a
+///        `resolution` or `thin_part_radius` in it is not used.
+///
+/// \returns the level of detail, or `std::nullopt` when the mesh encloses no volume at
+///          `resolution` (a shape thinner than a voxel of that grid).
+/// \throws std::invalid_argument for any other bad input or parameter, as the stages do.
+///
+/// \b Complexity: that of the stages on the grid of `resolution`: linear in its voxels and
+/// the mesh's faces, in practice.
+template <typename FaceGraph, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+std::optional<Coarse_skeleton_level_of_detail>
+coarse_skeleton_level_of_detail(const FaceGraph& mesh, int resolution, const Voxel_frame& frame,
+                                const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  namespace ranges = parameter_ranges;
+  // Every parameter that the stages below read; each keeps its meaning, unchecked values
+  // are checked by the stage that reads them.
+  const auto coarse_np = parameters::combine(
+      parameters::resolution(resolution), parameters::thin_part_radius(default_thin_part_radius(resolution)),
+      parameters::vertex_point_map(choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                                    get_const_property_map(CGAL::vertex_point, mesh))),
+      parameters::fill_holes(bool(choose_parameter(get_parameter(np, internal_np::fill_holes_tag), true))),
+      parameters::keep_surface_voxels(bool(choose_parameter(get_parameter(np, internal_np::keep_surface_voxels_tag), true))),
+      parameters::memory_limit(internal::memory_limit(np, "coarse_skeleton_level_of_detail")),
+      parameters::small_piece_fraction(double(choose_parameter(get_parameter(np, internal_np::small_piece_fraction_tag),
+                                                               ranges::small_piece_fraction.default_value))),
+      parameters::spur_length_factor(double(choose_parameter(get_parameter(np, internal_np::spur_length_factor_tag),
+                                                             ranges::spur_length_factor.default_value))),
+      parameters::limb_protrusion_factor(double(choose_parameter(
+          get_parameter(np, internal_np::limb_protrusion_factor_tag), ranges::limb_protrusion_factor.default_value))));
+  return internal::coarse_skeleton_level_of_detail_with(mesh, frame, coarse_np);
 }
 
 /// \ingroup PkgGeodesicSkeletonRef

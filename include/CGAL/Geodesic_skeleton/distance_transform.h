@@ -90,47 +90,16 @@ inline void lower_envelope_pass(std::uint32_t* data, std::size_t n, std::ptrdiff
 
 } // namespace internal
 
-/// \ingroup PkgGeodesicSkeletonRef
-/// Computes the exact squared Euclidean distance transform of `voxels`: for every voxel
-/// of the set, the squared distance (unit: squared voxels) from its centre to the centre of
-/// the nearest voxel not in the set. Its square root minus half a voxel, times the voxel
-/// size, is the radius function of the medial axis transform (`Voxel_distance_field::radius()`).
-///
-/// <b>Method.</b> Separable: along x, the distance to the nearest outside voxel of the row
-/// (two scans); then along y and along z, the lower envelope of parabolas of Felzenszwalb
-/// and Huttenlocher, which is exact for the Euclidean metric. Integer arithmetic.
-///
-/// \tparam VoxelSet a model of `VoxelSet`. Whatever the model, the set is copied into a
-///         dense array over its bounding box (the field's own array).
-/// \param voxels the solid (e.g. `voxelize()`'s output); it is not modified.
-/// \param np an optional sequence of \ref manual_named_parameters "named parameters"
-///        among the ones listed below:
-/// \cgalNamedParamsBegin
-///   \cgalParamNBegin{memory_limit}
-///     \cgalParamDescription{the most memory the function may allocate, in bytes (package
-///                           parameter)}
-///     \cgalParamType{`double`}
-///     \cgalParamDefault{`default_voxel_memory_limit`, 2 GiB}
-///     \cgalParamExtra{The need, 4 bytes per voxel of the set's bounding box grown by one
-///                     voxel, is checked before allocating.}
-///   \cgalParamNEnd
-/// \cgalNamedParamsEnd
-///
-/// \returns the distance field, over the tight bounding box of the set grown by one voxel.
-/// \pre `voxels` is not empty.
-/// \throws std::invalid_argument when `voxels` is empty.
-/// \throws std::length_error when the field would need more than `memory_limit` bytes.
-///
-/// \b Complexity: O(B) time and memory, for B voxels in the set's bounding box: linear.
-template <typename VoxelSet, typename NamedParameters = CGAL::parameters::Default_named_parameters>
-Voxel_distance_field distance_transform(const VoxelSet& voxels,
-                                        const NamedParameters& np = CGAL::parameters::default_values())
+namespace internal {
+
+// distance_transform() once its memory limit is read: compiled once per voxel set type.
+template <typename VoxelSet>
+Voxel_distance_field distance_transform_with(const VoxelSet& voxels, double memory_limit)
 {
   const char* caller = "distance_transform";
   const Voxel_box box = internal::require_nonempty_box(voxels, 1, caller);
   const internal::Grid_layout layout(box);
-  internal::require_memory(4. * double(layout.volume()), internal::memory_limit(np), layout,
-                           caller, "a distance field");
+  internal::require_memory(4. * double(layout.volume()), memory_limit, layout, caller, "a distance field");
 
   constexpr std::uint32_t infinity = 0xFFFFFFFFu;
   std::vector<std::uint32_t> d(layout.volume(), 0u);
@@ -171,6 +140,47 @@ Voxel_distance_field distance_transform(const VoxelSet& voxels,
                                     layout.stride_z, f, v, z_num, z_den);
 
   return Voxel_distance_field(voxels.frame(), box, std::move(d));
+}
+
+} // namespace internal
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// Computes the exact squared Euclidean distance transform of `voxels`: for every voxel
+/// of the set, the squared distance (unit: squared voxels) from its centre to the centre of
+/// the nearest voxel not in the set. Its square root minus half a voxel, times the voxel
+/// size, is the radius function of the medial axis transform (`Voxel_distance_field::radius()`).
+///
+/// <b>Method.</b> Separable: along x, the distance to the nearest outside voxel of the row
+/// (two scans); then along y and along z, the lower envelope of parabolas of Felzenszwalb
+/// and Huttenlocher, which is exact for the Euclidean metric. Integer arithmetic.
+///
+/// \tparam VoxelSet a model of `VoxelSet`. Whatever the model, the set is copied into a
+///         dense array over its bounding box (the field's own array).
+/// \param voxels the solid (e.g. `voxelize()`'s output); it is not modified.
+/// \param np an optional sequence of \ref manual_named_parameters "named parameters"
+///        among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{memory_limit}
+///     \cgalParamDescription{the most memory the function may allocate, in bytes (package
+///                           parameter)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`default_voxel_memory_limit`, 2 GiB}
+///     \cgalParamExtra{The need, 4 bytes per voxel of the set's bounding box grown by one
+///                     voxel, is checked before allocating.}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns the distance field, over the tight bounding box of the set grown by one voxel.
+/// \pre `voxels` is not empty.
+/// \throws std::invalid_argument when `voxels` is empty.
+/// \throws std::length_error when the field would need more than `memory_limit` bytes.
+///
+/// \b Complexity: O(B) time and memory, for B voxels in the set's bounding box: linear.
+template <typename VoxelSet, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Voxel_distance_field distance_transform(const VoxelSet& voxels,
+                                        const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return internal::distance_transform_with(voxels, internal::memory_limit(np, "distance_transform"));
 }
 
 } // namespace Geodesic_skeleton

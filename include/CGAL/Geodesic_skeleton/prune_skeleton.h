@@ -22,6 +22,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -234,17 +235,21 @@ Pruning_report prune_skeleton(VoxelSet& skeleton,
                                   " gives a negative or non-finite radius");
     return r;
   };
-  auto mat_radius = [&](const Voxel_key& k) {
+  // The radii reach the internal stages as std::function: those are then compiled once per
+  // voxel set type, not once per type of named-parameter pack and maps (a call of the chain
+  // with one more parameter would otherwise compile the whole of pruning again).
+  using Radius_of_voxel = std::function<double(const Voxel_key&)>;
+  const Radius_of_voxel mat_radius = [&](const Voxel_key& k) {
     return checked(static_cast<double>(get(mat_radius_map, k)), "MAT radius map");
   };
   // A twig is judged by the larger of the two radii: in a thin sheet, its width.
-  auto radius = [&](const Voxel_key& k) {
+  const Radius_of_voxel radius = [&](const Voxel_key& k) {
     return (std::max)(mat_radius(k), checked(static_cast<double>(get(sheet_radius_map, k)), "sheet radius map"));
   };
   const auto piece_radius_map = choose_parameter(get_parameter(np, internal_np::piece_radius_map_tag),
                                                  CGAL::Constant_property_map<Voxel_key, double>(0.0));
   // The unit of a piece's level of detail: its largest radius, or what the map gives.
-  auto piece_radius = [&](const Voxel_key& k) {
+  const Radius_of_voxel piece_radius = [&](const Voxel_key& k) {
     return (std::max)(radius(k), checked(static_cast<double>(get(piece_radius_map, k)), "piece radius map"));
   };
   const auto radii = internal::snipping_radii(radius, mat_radius);

@@ -82,6 +82,50 @@ std::vector<std::size_t> solid_piece_sizes(const VoxelDistanceField& distances, 
 
 } // namespace internal
 
+namespace internal {
+
+// remove_small_pieces() once its parameter is read: compiled once per voxel set and field
+// type, whatever the parameter pack.
+template <typename VoxelSet, typename VoxelDistanceField>
+Small_pieces_report remove_small_pieces_with(VoxelSet& skeleton, const VoxelDistanceField& distances, double fraction)
+{
+  Small_pieces_report report;
+  std::vector<Voxel_key> keys;
+  keys.reserve(skeleton.size());
+  skeleton.for_each([&](const Voxel_key& k) { keys.push_back(k); });
+  std::vector<std::size_t> piece_of;
+  report.pieces = internal::voxel_components(keys, [&](const Voxel_key& k) { return skeleton.contains(k); }, piece_of);
+  if(report.pieces <= 1 || fraction == 0)
+    return report;
+
+  // One seed per piece: its first voxel.
+  std::vector<Voxel_key> seeds(report.pieces);
+  std::vector<bool> seeded(report.pieces, false);
+  for(std::size_t i = 0; i < keys.size(); ++i)
+    if(!seeded[piece_of[i]])
+    {
+      seeded[piece_of[i]] = true;
+      seeds[piece_of[i]] = keys[i];
+    }
+  const std::vector<std::size_t> sizes = internal::solid_piece_sizes(distances, seeds);
+  const std::size_t largest = *std::max_element(sizes.begin(), sizes.end());
+  std::vector<bool> small(report.pieces);
+  for(std::size_t p = 0; p < report.pieces; ++p)
+  {
+    small[p] = double(sizes[p]) < fraction * double(largest);
+    report.removed_pieces += small[p];
+  }
+  for(std::size_t i = 0; i < keys.size(); ++i)
+    if(small[piece_of[i]])
+    {
+      skeleton.erase(keys[i]);
+      ++report.removed_voxels;
+    }
+  return report;
+}
+
+} // namespace internal
+
 /// \ingroup PkgGeodesicSkeletonRef
 /// Removes from a voxel skeleton its small detached pieces: the 26-connected pieces whose
 /// solid (the voxels of the distance field's solid connected to them) has fewer than
@@ -130,39 +174,7 @@ Small_pieces_report remove_small_pieces(VoxelSet& skeleton, const VoxelDistanceF
       choose_parameter(get_parameter(np, internal_np::small_piece_fraction_tag),
                        parameter_ranges::small_piece_fraction.default_value),
       "remove_small_pieces");
-  Small_pieces_report report;
-  std::vector<Voxel_key> keys;
-  keys.reserve(skeleton.size());
-  skeleton.for_each([&](const Voxel_key& k) { keys.push_back(k); });
-  std::vector<std::size_t> piece_of;
-  report.pieces = internal::voxel_components(keys, [&](const Voxel_key& k) { return skeleton.contains(k); }, piece_of);
-  if(report.pieces <= 1 || fraction == 0)
-    return report;
-
-  // One seed per piece: its first voxel.
-  std::vector<Voxel_key> seeds(report.pieces);
-  std::vector<bool> seeded(report.pieces, false);
-  for(std::size_t i = 0; i < keys.size(); ++i)
-    if(!seeded[piece_of[i]])
-    {
-      seeded[piece_of[i]] = true;
-      seeds[piece_of[i]] = keys[i];
-    }
-  const std::vector<std::size_t> sizes = internal::solid_piece_sizes(distances, seeds);
-  const std::size_t largest = *std::max_element(sizes.begin(), sizes.end());
-  std::vector<bool> small(report.pieces);
-  for(std::size_t p = 0; p < report.pieces; ++p)
-  {
-    small[p] = double(sizes[p]) < fraction * double(largest);
-    report.removed_pieces += small[p];
-  }
-  for(std::size_t i = 0; i < keys.size(); ++i)
-    if(small[piece_of[i]])
-    {
-      skeleton.erase(keys[i]);
-      ++report.removed_voxels;
-    }
-  return report;
+  return internal::remove_small_pieces_with(skeleton, distances, fraction);
 }
 
 } // namespace Geodesic_skeleton

@@ -99,6 +99,53 @@ bool fits_as_lone_path(const VoxelSet& skeleton, const std::vector<Voxel_key>& r
 
 } // namespace internal
 
+namespace internal {
+
+// route_lone_paths_through_the_middle() once its parameter is read: compiled once per voxel
+// set type, whatever the parameter pack.
+template <typename VoxelSet>
+std::size_t route_lone_paths_with(VoxelSet& skeleton, const Voxel_distance_field& distances, double detour_factor)
+{
+  if(detour_factor == 0)
+    return 0;
+  const double largest_radius = internal::mat_radius_in_voxels(distances.max_squared_distance());
+  std::size_t routed = 0;
+  for(const std::vector<Voxel_key>& path : internal::lone_paths(skeleton))
+  {
+    const Voxel_key& goal = path.back();
+    const double cost = internal::cost_through_the_middle(distances, path);
+    const std::vector<Voxel_key> straight = internal::straight_voxel_path(path.front(), goal);
+    if(!std::all_of(straight.begin(), straight.end(), [&](const Voxel_key& k) { return distances.inside(k); }))
+      continue;
+    const double straight_cost = internal::cost_through_the_middle(distances, straight);
+    if(!(detour_factor * straight_cost < cost))
+      continue; // no detour
+    // No step costs less than its length over the largest radius: the straight distance
+    // over it bounds the cost to the goal from below, consistently along each step. The
+    // straight segment is a path within the limit (rounding aside).
+    auto estimate = [&](const Voxel_key& k) {
+      return std::sqrt(double(internal::squared_distance_between(k, goal))) / largest_radius;
+    };
+    const internal::Search_bounds<decltype(estimate)> bounds{estimate, straight_cost * (1 + 1e-9)};
+    std::vector<Voxel_key> middle = internal::path_through_the_middle(
+        distances, path.front(), [&](const Voxel_key& k) { return k == goal; }, bounds);
+    if(middle.empty())
+      continue;
+    std::reverse(middle.begin(), middle.end());
+    middle.push_back(goal);
+    if(!internal::fits_as_lone_path(skeleton, path, middle))
+      continue;
+    for(const Voxel_key& k : path)
+      skeleton.erase(k);
+    for(const Voxel_key& k : middle)
+      skeleton.insert(k);
+    ++routed;
+  }
+  return routed;
+}
+
+} // namespace internal
+
 /// \ingroup PkgGeodesicSkeletonRef
 /// Routes each piece of a pruned skeleton that is a lone path (two end points and no
 /// junction in the graph that `to_graph()` makes) through the middle of the solid between
@@ -163,42 +210,7 @@ std::size_t route_lone_paths_through_the_middle(VoxelSet& skeleton, const Voxel_
       choose_parameter(get_parameter(np, internal_np::lone_path_detour_factor_tag),
                        parameter_ranges::lone_path_detour_factor.default_value),
       "route_lone_paths_through_the_middle");
-  if(detour_factor == 0)
-    return 0;
-  const double largest_radius = internal::mat_radius_in_voxels(distances.max_squared_distance());
-  std::size_t routed = 0;
-  for(const std::vector<Voxel_key>& path : internal::lone_paths(skeleton))
-  {
-    const Voxel_key& goal = path.back();
-    const double cost = internal::cost_through_the_middle(distances, path);
-    const std::vector<Voxel_key> straight = internal::straight_voxel_path(path.front(), goal);
-    if(!std::all_of(straight.begin(), straight.end(), [&](const Voxel_key& k) { return distances.inside(k); }))
-      continue;
-    const double straight_cost = internal::cost_through_the_middle(distances, straight);
-    if(!(detour_factor * straight_cost < cost))
-      continue; // no detour
-    // No step costs less than its length over the largest radius: the straight distance
-    // over it bounds the cost to the goal from below, consistently along each step. The
-    // straight segment is a path within the limit (rounding aside).
-    auto estimate = [&](const Voxel_key& k) {
-      return std::sqrt(double(internal::squared_distance_between(k, goal))) / largest_radius;
-    };
-    const internal::Search_bounds<decltype(estimate)> bounds{estimate, straight_cost * (1 + 1e-9)};
-    std::vector<Voxel_key> middle = internal::path_through_the_middle(
-        distances, path.front(), [&](const Voxel_key& k) { return k == goal; }, bounds);
-    if(middle.empty())
-      continue;
-    std::reverse(middle.begin(), middle.end());
-    middle.push_back(goal);
-    if(!internal::fits_as_lone_path(skeleton, path, middle))
-      continue;
-    for(const Voxel_key& k : path)
-      skeleton.erase(k);
-    for(const Voxel_key& k : middle)
-      skeleton.insert(k);
-    ++routed;
-  }
-  return routed;
+  return internal::route_lone_paths_with(skeleton, distances, detour_factor);
 }
 
 } // namespace Geodesic_skeleton

@@ -174,24 +174,26 @@ inline void flood_outside(const Grid_layout& layout, std::vector<std::uint8_t>& 
 
 // voxelize(), which also hands over, when `rasterised` is not null, the triangles it
 // rasterised, for the later inside tests of the pipeline.
-template <typename FaceGraph, typename VoxelSet, typename NamedParameters>
-std::size_t voxelize_impl(const FaceGraph& mesh, VoxelSet& voxels, const NamedParameters& np)
+// The settings of voxelize(), read from its named parameters.
+struct Voxelize_settings
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
+  int resolution;
+  bool fill_holes;
+  bool keep_surface_voxels;
+  double memory_limit;
+  Voxelized_surface* rasterised; // receives the triangles rasterised, when not null
+};
+
+// voxelize() once its parameters are read: compiled once per mesh, point map and voxel set
+// type, whatever the parameter pack.
+template <typename FaceGraph, typename VertexPointMap, typename VoxelSet>
+std::size_t voxelize_with(const FaceGraph& mesh, const VertexPointMap& vpm, VoxelSet& voxels,
+                          const Voxelize_settings& settings)
+{
   const char* caller = "voxelize";
-
-  const int resolution = internal::checked_parameter(
-      parameter_ranges::resolution,
-      choose_parameter(get_parameter(np, internal_np::resolution_tag), default_voxel_resolution), caller);
-  const bool fill_holes =
-      choose_parameter(get_parameter(np, internal_np::fill_holes_tag), true);
-  const bool keep_surface_voxels =
-      choose_parameter(get_parameter(np, internal_np::keep_surface_voxels_tag), true);
-  internal::memory_limit(np, caller); // checked before any work
-
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, mesh));
+  const int resolution = settings.resolution;
+  const bool fill_holes = settings.fill_holes;
+  const bool keep_surface_voxels = settings.keep_surface_voxels;
   std::vector<internal::Triangle3> triangles = internal::mesh_triangles(mesh, vpm, caller);
 
   Voxel_box box;
@@ -200,7 +202,7 @@ std::size_t voxelize_impl(const FaceGraph& mesh, VoxelSet& voxels, const NamedPa
   internal::close_holes(mesh, vpm, triangles, fill_holes);
   const internal::Grid_layout layout(box);
   internal::require_memory((keep_surface_voxels ? 6. : 11.) * double(layout.volume()),
-                           internal::memory_limit(np), layout, caller,
+                           settings.memory_limit, layout, caller,
                            "a grid (resolution " + std::to_string(resolution) + ")");
 
   std::vector<std::uint8_t> labels(layout.volume(), internal::EMPTY);
@@ -251,10 +253,29 @@ std::size_t voxelize_impl(const FaceGraph& mesh, VoxelSet& voxels, const NamedPa
       ++count;
     }
   });
-  if(Voxelized_surface* surface = choose_parameter(get_parameter(np, internal_np::voxelized_surface_output_tag),
-                                                   static_cast<Voxelized_surface*>(nullptr)))
-    *surface = Voxelized_surface(frame, std::move(grid_triangles), internal::Triangles_of_a_mesh{});
+  if(settings.rasterised != nullptr)
+    *settings.rasterised = Voxelized_surface(frame, std::move(grid_triangles), internal::Triangles_of_a_mesh{});
   return count;
+}
+
+template <typename FaceGraph, typename VoxelSet, typename NamedParameters>
+std::size_t voxelize_impl(const FaceGraph& mesh, VoxelSet& voxels, const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const char* caller = "voxelize";
+  Voxelize_settings settings;
+  settings.resolution = internal::checked_parameter(
+      parameter_ranges::resolution,
+      choose_parameter(get_parameter(np, internal_np::resolution_tag), default_voxel_resolution), caller);
+  settings.fill_holes = choose_parameter(get_parameter(np, internal_np::fill_holes_tag), true);
+  settings.keep_surface_voxels = choose_parameter(get_parameter(np, internal_np::keep_surface_voxels_tag), true);
+  settings.memory_limit = internal::memory_limit(np, caller); // checked before any work
+  settings.rasterised = choose_parameter(get_parameter(np, internal_np::voxelized_surface_output_tag),
+                                         static_cast<Voxelized_surface*>(nullptr));
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, mesh));
+  return voxelize_with(mesh, vpm, voxels, settings);
 }
 
 } // namespace internal
