@@ -25,7 +25,6 @@ build=build-sanitize
 sanitize="${SANITIZER_FLAGS:--fsanitize=address,undefined -fno-sanitize=null,alignment,pointer-overflow,object-size,vptr -fno-sanitize-recover=all -fno-omit-frame-pointer}"
 # -O1: fast enough for CGAL. No NDEBUG: the package's and CGAL's assertions stay on too.
 # Ninja builds the three targets side by side (make would build them one after another).
-
 if [ -f "$build/CMakeCache.txt" ]; then
   grep -q "^CMAKE_GENERATOR:INTERNAL=Ninja$" "$build/CMakeCache.txt" || rm -rf "$build" # this script's own folder
 fi

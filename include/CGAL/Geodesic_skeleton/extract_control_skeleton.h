@@ -42,6 +42,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -182,6 +183,251 @@ void check_control_skeleton_parameters(const NamedParameters& np, const std::str
                     choose_parameter(get_parameter(np, internal_np::number_of_reeb_intervals_tag),
                                      static_cast<std::size_t>(ranges::number_of_reeb_intervals.default_value)),
                     caller);
+}
+
+} // namespace internal
+
+namespace internal {
+
+// The settings of extract_control_skeleton(), read from its named parameters; an empty
+// optional is a parameter not given, whose default depends on the grid.
+struct Control_skeleton_settings
+{
+  int resolution = default_voxel_resolution;
+  bool fill_holes = true;
+  bool keep_surface_voxels = true;
+  double memory_limit = 0;
+  std::optional<double> thin_part_radius;
+  double small_piece_fraction = 0;
+  double spur_length_factor = 0;
+  double limb_protrusion_factor = 0;
+  double lone_path_detour_factor = 0;
+  int level_of_detail_resolution = default_voxel_resolution;
+  std::optional<int> smoothing_window;
+  std::optional<double> smallest_radius;
+  double tip_joint_setback = 0;
+  std::optional<double> joint_spacing;
+  double joint_spacing_factor = 0;
+  Bone_splitting_settings split; // bend threshold, straightness, bone lengths, chords
+};
+
+template <typename NamedParameters, typename Tag, typename T>
+std::optional<T> given_parameter(const NamedParameters& np, Tag tag, T)
+{
+  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, Tag>::value)
+    return std::nullopt;
+  else
+    return static_cast<T>(CGAL::parameters::get_parameter(np, tag));
+}
+
+// Reads (and checks) every parameter of the chain.
+template <typename NamedParameters>
+Control_skeleton_settings control_skeleton_settings(const NamedParameters& np, const std::string& caller)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  namespace ranges = parameter_ranges;
+  check_control_skeleton_parameters(np, caller);
+  Control_skeleton_settings s;
+  s.resolution = choose_parameter(get_parameter(np, internal_np::resolution_tag), default_voxel_resolution);
+  s.fill_holes = choose_parameter(get_parameter(np, internal_np::fill_holes_tag), true);
+  s.keep_surface_voxels = choose_parameter(get_parameter(np, internal_np::keep_surface_voxels_tag), true);
+  s.memory_limit = memory_limit(np, caller);
+  s.thin_part_radius = given_parameter(np, internal_np::thin_part_radius_tag, double());
+  s.small_piece_fraction = choose_parameter(get_parameter(np, internal_np::small_piece_fraction_tag),
+                                            ranges::small_piece_fraction.default_value);
+  s.spur_length_factor = choose_parameter(get_parameter(np, internal_np::spur_length_factor_tag),
+                                          ranges::spur_length_factor.default_value);
+  s.limb_protrusion_factor = choose_parameter(get_parameter(np, internal_np::limb_protrusion_factor_tag),
+                                              ranges::limb_protrusion_factor.default_value);
+  s.lone_path_detour_factor = choose_parameter(get_parameter(np, internal_np::lone_path_detour_factor_tag),
+                                               ranges::lone_path_detour_factor.default_value);
+  s.level_of_detail_resolution =
+      choose_parameter(get_parameter(np, internal_np::level_of_detail_resolution_tag), default_voxel_resolution);
+  s.smoothing_window = given_parameter(np, internal_np::smoothing_window_tag, int());
+  s.smallest_radius = given_parameter(np, internal_np::smallest_radius_tag, double());
+  s.tip_joint_setback = choose_parameter(get_parameter(np, internal_np::tip_joint_setback_tag),
+                                         ranges::tip_joint_setback.default_value);
+  s.joint_spacing = given_parameter(np, internal_np::joint_spacing_tag, double());
+  s.joint_spacing_factor = choose_parameter(get_parameter(np, internal_np::joint_spacing_factor_tag),
+                                            ranges::joint_spacing_factor.default_value);
+  s.split = bone_splitting_settings(np, caller);
+  return s;
+}
+
+// A visitor of any type, behind one type.
+struct Stage_visitor
+{
+  std::function<void(const std::string&, double)> stage_finished_function;
+  void stage_finished(const std::string& stage, double milliseconds) { stage_finished_function(stage, milliseconds); }
+};
+
+// The voxel chain of extract_control_skeleton() (all but the Reeb graph), once its
+// parameters are read: compiled once per mesh, point map and point type, whatever the
+// parameter pack.
+template <typename FaceGraph, typename VertexPointMap, typename Point>
+void extract_control_skeleton_with(
+    const FaceGraph& mesh, const VertexPointMap& vpm, Control_skeleton<Point>& out,
+    const Control_skeleton_settings& settings,
+    Curve_skeleton<Point, typename boost::graph_traits<FaceGraph>::vertex_descriptor>* curve_output,
+    Curve_skeleton<Point, typename boost::graph_traits<FaceGraph>::vertex_descriptor>* thinned_output,
+    Stage_clock<Stage_visitor>& clock, Control_skeleton_report& report)
+{
+  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
+  using Skeleton = Curve_skeleton<Point, vertex_descriptor>;
+  // The parameters that the stages read, of one type.
+  const auto np = parameters::combine(
+      parameters::vertex_point_map(vpm), parameters::resolution(settings.resolution),
+      parameters::fill_holes(settings.fill_holes), parameters::keep_surface_voxels(settings.keep_surface_voxels),
+      parameters::memory_limit(settings.memory_limit), parameters::small_piece_fraction(settings.small_piece_fraction),
+      parameters::spur_length_factor(settings.spur_length_factor),
+      parameters::limb_protrusion_factor(settings.limb_protrusion_factor),
+      parameters::lone_path_detour_factor(settings.lone_path_detour_factor));
+  // Each stage is a public function; the mesh as voxelize() rasterised it is shared with
+  // the stages that test inside and outside, so that none reads the mesh again.
+  Dense_voxel_grid solid;
+  Voxelized_surface surface;
+  report.solid_voxels = voxelize(mesh, solid, parameters::combine(parameters::voxelized_surface_output(&surface), np));
+  report.resolution = settings.resolution;
+  report.voxel_size = solid.frame().voxel_size();
+  clock.finished("voxelize");
+  const auto with_surface = parameters::combine(parameters::voxelized_surface(&std::as_const(surface)), np);
+
+  // A finer grid than the level of detail's takes from it which branches and which pieces
+  // the rig has (the resolution is a sampling choice, not a modelling one).
+  report.level_of_detail_resolution = settings.level_of_detail_resolution;
+  const bool finer_than_level_of_detail =
+      report.level_of_detail_resolution > 0 && report.level_of_detail_resolution < report.resolution;
+  std::optional<Coarse_skeleton_level_of_detail> coarse;
+  if(finer_than_level_of_detail)
+    coarse = coarse_skeleton_level_of_detail(mesh, report.level_of_detail_resolution, solid.frame(), np);
+  clock.finished("level_of_detail");
+  if(coarse)
+  {
+    report.pieces_joined = join_pieces_joined_on_coarser_grid(solid, coarse->solid);
+    report.solid_voxels = solid.size();
+    coarse->solid = Dense_voxel_grid(); // not needed further
+  }
+  clock.finished("join_pieces");
+
+  const Voxel_distance_field distances = distance_transform(solid, np);
+  clock.finished("distance_transform");
+
+  // The sheet radii let pruning judge the twigs of a thin sheet by its width; the parts
+  // thin at the default resolution are thin at any other.
+  report.thin_part_radius = settings.thin_part_radius.value_or(default_thin_part_radius(report.resolution));
+  Sheet_radii sheet_radii, slanted_sheet_radii;
+  thin(solid, distances,
+       parameters::combine(
+           parameters::sheet_radius_map(boost::associative_property_map<Sheet_radii>(sheet_radii)),
+           parameters::slanted_sheet_radius_map(boost::associative_property_map<Sheet_radii>(slanted_sheet_radii)),
+           parameters::thin_part_radius(report.thin_part_radius), np));
+  Sparse_voxel_set skeleton;
+  skeleton.reset(solid.frame(), solid.bounding_box());
+  solid.for_each([&](const Voxel_key& k) { skeleton.insert(k); });
+  clock.finished("thin");
+
+  if(thinned_output != nullptr)
+  {
+    Skeleton thinned;
+    to_graph(skeleton, distances, mesh, thinned, with_surface);
+    report.thinned = skeleton_statistics(thinned);
+    *thinned_output = std::move(thinned);
+  }
+  else
+    report.thinned = skeleton_statistics_of_voxels(skeleton);
+  clock.finished("thinned_graph");
+
+  report.small_pieces = remove_small_pieces(skeleton, distances, np);
+  clock.finished("remove_small_pieces");
+
+  report.spurious_cycles_cut = cut_spurious_cycles(skeleton, mesh, with_surface);
+  clock.finished("cut_spurious_cycles");
+  // Pruning judges a piece's twigs by its widest sheet, and may keep a chain beside it. On
+  // the grid of the level of detail, the widest sheet is read across close levels, which
+  // measures a thick slanted plate; a finer grid gets it from that grid (`coarse` above).
+  const Sheet_radii widest_sheet_of_piece =
+      widest_sheet_radius_of_pieces(skeleton, finer_than_level_of_detail ? sheet_radii : slanted_sheet_radii);
+
+  // The end branches that a finer grid resolves beyond the level of detail of the default
+  // one are snipped as long as the skeleton has more end points than it has there.
+  const double coarse_tolerance =
+      coarse ? default_coarse_end_point_tolerance(report.resolution, report.level_of_detail_resolution)
+             : parameter_ranges::coarse_end_point_tolerance.default_value;
+  report.pruning = prune_skeleton(
+      skeleton,
+      parameters::combine(
+          parameters::mat_radius_map(mat_radius_in_voxels_map(distances)),
+          parameters::sheet_radius_map(sheet_radius_in_voxels_map(sheet_radii)),
+          parameters::piece_radius_map(sheet_radius_in_voxels_map(widest_sheet_of_piece)),
+          parameters::coarse_end_points(coarse ? &std::as_const(coarse->end_points) : nullptr),
+          parameters::coarse_end_point_tolerance(coarse_tolerance), np));
+  // And the limbs that the finer grid's thinning did not make are grafted back.
+  if(coarse)
+    report.coarse_end_branches_grafted = graft_coarse_end_branches(
+        skeleton, distances, coarse->end_points, parameters::coarse_end_point_tolerance(coarse_tolerance));
+  // And a lone path keeps its ends but not a detour that thinning took between them.
+  report.lone_paths_routed = route_lone_paths_through_the_middle(skeleton, distances, np);
+  clock.finished("prune");
+
+  Skeleton curve;
+  to_graph(skeleton, distances, mesh, curve, with_surface);
+  report.pruned = skeleton_statistics(curve);
+  clock.finished("to_graph");
+
+  // The curve skeleton's own maps, ahead of np: a vertex_point_map in np is the mesh's.
+  using Curve_vertex = Curve_skeleton_vertex<Point, vertex_descriptor>;
+  const auto curve_np = parameters::combine(parameters::vertex_point_map(get(&Curve_vertex::point, curve)),
+                                            parameters::mat_radius_map(get(&Curve_vertex::radius, curve)), np);
+  // The paper's 5 points at the default resolution span the same length at any other.
+  report.smoothing_window = settings.smoothing_window.value_or(default_smoothing_window(report.resolution));
+  smooth_skeleton(curve, parameters::combine(parameters::smoothing_window(report.smoothing_window), curve_np));
+  clock.finished("smooth");
+
+  const std::vector<std::size_t> moved_inside = move_skeleton_inside(mesh, curve, with_surface);
+  report.curve_points_moved_inside = moved_inside.size();
+  surface = Voxelized_surface(); // as large as the mesh
+  clock.finished("curve_points_inside");
+
+  // Parts thinner than half a voxel of the default grid get the joints of parts that thick,
+  // whatever the resolution: a finer grid measures them thinner, and the rig's joints should
+  // not multiply with it (at the default resolution no MAT radius is smaller).
+  report.smallest_radius =
+      settings.smallest_radius.value_or(default_smallest_radius(report.voxel_size, report.resolution));
+  // A thin sheet's chain is split in lengths of the sheet's width, and a piece at the level
+  // of detail of its widest sheet, as pruning judged them, and at least as wide as the
+  // coarser grid measures it.
+  const std::vector<double> sheet_widths = sheet_half_widths(curve, sheet_radii, report.voxel_size);
+  std::vector<double> piece_widths = sheet_half_widths(curve, widest_sheet_of_piece, report.voxel_size);
+  if(coarse)
+  {
+    const std::vector<double> coarse_widths = coarse_piece_half_widths(curve, *coarse);
+    for(std::size_t v = 0; v < piece_widths.size(); ++v)
+      piece_widths[v] = (std::max)(piece_widths[v], coarse_widths[v]);
+  }
+  // Chains end short of the tips and long bones get joints in between, as artists place them;
+  // the spacing is a share of the whole shape, so a character gets as many joints at any size.
+  report.tip_joint_setback = settings.tip_joint_setback;
+  report.joint_spacing = settings.joint_spacing.value_or(
+      default_joint_spacing(report.voxel_size, report.resolution, settings.joint_spacing_factor));
+  split_into_bones(curve, out,
+                   parameters::combine(parameters::smallest_radius(report.smallest_radius),
+                                       parameters::tip_joint_setback(report.tip_joint_setback),
+                                       parameters::joint_spacing(report.joint_spacing),
+                                       parameters::sheet_half_width_map(CGAL::make_property_map(sheet_widths)),
+                                       parameters::piece_radius_map(CGAL::make_property_map(piece_widths)),
+                                       parameters::bend_threshold(settings.split.bend_threshold),
+                                       parameters::straightness_tolerance(settings.split.straightness_tolerance),
+                                       parameters::minimum_bone_length_factor(settings.split.minimum_bone_length_factor),
+                                       parameters::maximum_bone_length_factor(settings.split.maximum_bone_length_factor),
+                                       parameters::chord_length_factors(settings.split.chord_length_factors),
+                                       parameters::minimum_bone_length_of_piece_factor(
+                                           settings.split.minimum_bone_length_of_piece_factor),
+                                       curve_np));
+  report.joints_moved_inside = joints_on_vertices(out, moved_inside);
+  clock.finished("split_into_bones");
+  if(curve_output != nullptr)
+    *curve_output = std::move(curve);
 }
 
 } // namespace internal
@@ -409,162 +655,24 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  using CGAL::parameters::is_default_parameter;
   using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
   using Skeleton = Curve_skeleton<Point, vertex_descriptor>;
 
   Default_pipeline_visitor default_visitor;
   auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), default_visitor);
+  internal::Stage_visitor stage_visitor{[visitor](const std::string& stage, double ms) mutable {
+    visitor.stage_finished(stage, ms);
+  }};
   Control_skeleton_report report;
-  internal::Stage_clock<decltype(visitor)> clock(visitor, report);
+  internal::Stage_clock<internal::Stage_visitor> clock(stage_visitor, report);
   out = Control_skeleton<Point>();
-  internal::check_control_skeleton_parameters(np, "extract_control_skeleton");
-
-  // Each stage is a public function; the mesh as voxelize() rasterised it is shared with
-  // the stages that test inside and outside, so that none reads the mesh again.
-  Dense_voxel_grid solid;
-  Voxelized_surface surface;
-  report.solid_voxels = voxelize(mesh, solid, parameters::combine(parameters::voxelized_surface_output(&surface), np));
-  report.resolution = choose_parameter(get_parameter(np, internal_np::resolution_tag), default_voxel_resolution);
-  report.voxel_size = solid.frame().voxel_size();
-  clock.finished("voxelize");
-  const auto with_surface = parameters::combine(parameters::voxelized_surface(&std::as_const(surface)), np);
-
-  // A finer grid than the level of detail's takes from it which branches and which pieces
-  // the rig has (the resolution is a sampling choice, not a modelling one).
-  report.level_of_detail_resolution = choose_parameter(get_parameter(np, internal_np::level_of_detail_resolution_tag),
-                                                       default_voxel_resolution);
-  const bool finer_than_level_of_detail =
-      report.level_of_detail_resolution > 0 && report.level_of_detail_resolution < report.resolution;
-  std::optional<Coarse_skeleton_level_of_detail> coarse;
-  if(finer_than_level_of_detail)
-    coarse = coarse_skeleton_level_of_detail(mesh, report.level_of_detail_resolution, solid.frame(), np);
-  clock.finished("level_of_detail");
-  if(coarse)
-  {
-    report.pieces_joined = join_pieces_joined_on_coarser_grid(solid, coarse->solid);
-    report.solid_voxels = solid.size();
-    coarse->solid = Dense_voxel_grid(); // not needed further
-  }
-  clock.finished("join_pieces");
-
-  const Voxel_distance_field distances = distance_transform(solid, np);
-  clock.finished("distance_transform");
-
-  // The sheet radii let pruning judge the twigs of a thin sheet by its width; the parts
-  // thin at the default resolution are thin at any other.
-  report.thin_part_radius = choose_parameter(get_parameter(np, internal_np::thin_part_radius_tag),
-                                             default_thin_part_radius(report.resolution));
-  Sheet_radii sheet_radii, slanted_sheet_radii;
-  thin(solid, distances,
-       parameters::combine(
-           parameters::sheet_radius_map(boost::associative_property_map<Sheet_radii>(sheet_radii)),
-           parameters::slanted_sheet_radius_map(boost::associative_property_map<Sheet_radii>(slanted_sheet_radii)),
-           parameters::thin_part_radius(report.thin_part_radius), np));
-  Sparse_voxel_set skeleton;
-  skeleton.reset(solid.frame(), solid.bounding_box());
-  solid.for_each([&](const Voxel_key& k) { skeleton.insert(k); });
-  clock.finished("thin");
-
-  if(Skeleton* thinned_output = internal::output_pointer<Skeleton>(np, internal_np::thinned_skeleton_output_tag))
-  {
-    Skeleton thinned;
-    to_graph(skeleton, distances, mesh, thinned, with_surface);
-    report.thinned = skeleton_statistics(thinned);
-    *thinned_output = std::move(thinned);
-  }
-  else
-    report.thinned = internal::skeleton_statistics_of_voxels(skeleton);
-  clock.finished("thinned_graph");
-
-  report.small_pieces = remove_small_pieces(skeleton, distances, np);
-  clock.finished("remove_small_pieces");
-
-  report.spurious_cycles_cut = cut_spurious_cycles(skeleton, mesh, with_surface);
-  clock.finished("cut_spurious_cycles");
-  // Pruning judges a piece's twigs by its widest sheet, and may keep a chain beside it. On
-  // the grid of the level of detail, the widest sheet is read across close levels, which
-  // measures a thick slanted plate; a finer grid gets it from that grid (`coarse` above).
-  const Sheet_radii widest_sheet_of_piece =
-      widest_sheet_radius_of_pieces(skeleton, finer_than_level_of_detail ? sheet_radii : slanted_sheet_radii);
-
-  // The end branches that a finer grid resolves beyond the level of detail of the default
-  // one are snipped as long as the skeleton has more end points than it has there.
-  const double coarse_tolerance =
-      coarse ? default_coarse_end_point_tolerance(report.resolution, report.level_of_detail_resolution)
-             : parameter_ranges::coarse_end_point_tolerance.default_value;
-  report.pruning = prune_skeleton(
-      skeleton,
-      parameters::combine(
-          parameters::mat_radius_map(mat_radius_in_voxels_map(distances)),
-          parameters::sheet_radius_map(sheet_radius_in_voxels_map(sheet_radii)),
-          parameters::piece_radius_map(sheet_radius_in_voxels_map(widest_sheet_of_piece)),
-          parameters::coarse_end_points(coarse ? &std::as_const(coarse->end_points) : nullptr),
-          parameters::coarse_end_point_tolerance(coarse_tolerance), np));
-  // And the limbs that the finer grid's thinning did not make are grafted back.
-  if(coarse)
-    report.coarse_end_branches_grafted = graft_coarse_end_branches(
-        skeleton, distances, coarse->end_points, parameters::coarse_end_point_tolerance(coarse_tolerance));
-  // And a lone path keeps its ends but not a detour that thinning took between them.
-  report.lone_paths_routed = route_lone_paths_through_the_middle(skeleton, distances, np);
-  clock.finished("prune");
-
-  Skeleton curve;
-  to_graph(skeleton, distances, mesh, curve, with_surface);
-  report.pruned = skeleton_statistics(curve);
-  clock.finished("to_graph");
-
-  // The curve skeleton's own maps, ahead of np: a vertex_point_map in np is the mesh's.
-  using Curve_vertex = Curve_skeleton_vertex<Point, vertex_descriptor>;
-  const auto curve_np = parameters::combine(parameters::vertex_point_map(get(&Curve_vertex::point, curve)),
-                                            parameters::mat_radius_map(get(&Curve_vertex::radius, curve)), np);
-  // The paper's 5 points at the default resolution span the same length at any other.
-  report.smoothing_window = choose_parameter(get_parameter(np, internal_np::smoothing_window_tag),
-                                             default_smoothing_window(report.resolution));
-  smooth_skeleton(curve, parameters::combine(parameters::smoothing_window(report.smoothing_window), curve_np));
-  clock.finished("smooth");
-
-  const std::vector<std::size_t> moved_inside = move_skeleton_inside(mesh, curve, with_surface);
-  report.curve_points_moved_inside = moved_inside.size();
-  surface = Voxelized_surface(); // as large as the mesh
-  clock.finished("curve_points_inside");
-
-  // Parts thinner than half a voxel of the default grid get the joints of parts that thick,
-  // whatever the resolution: a finer grid measures them thinner, and the rig's joints should
-  // not multiply with it (at the default resolution no MAT radius is smaller).
-  report.smallest_radius = choose_parameter(get_parameter(np, internal_np::smallest_radius_tag),
-                                            default_smallest_radius(report.voxel_size, report.resolution));
-  // A thin sheet's chain is split in lengths of the sheet's width, and a piece at the level
-  // of detail of its widest sheet, as pruning judged them, and at least as wide as the
-  // coarser grid measures it.
-  const std::vector<double> sheet_widths = sheet_half_widths(curve, sheet_radii, report.voxel_size);
-  std::vector<double> piece_widths = sheet_half_widths(curve, widest_sheet_of_piece, report.voxel_size);
-  if(coarse)
-  {
-    const std::vector<double> coarse_widths = coarse_piece_half_widths(curve, *coarse);
-    for(std::size_t v = 0; v < piece_widths.size(); ++v)
-      piece_widths[v] = (std::max)(piece_widths[v], coarse_widths[v]);
-  }
-  // Chains end short of the tips and long bones get joints in between, as artists place them;
-  // the spacing is a share of the whole shape, so a character gets as many joints at any size.
-  report.tip_joint_setback = choose_parameter(get_parameter(np, internal_np::tip_joint_setback_tag),
-                                              parameter_ranges::tip_joint_setback.default_value);
-  report.joint_spacing = choose_parameter(
-      get_parameter(np, internal_np::joint_spacing_tag),
-      default_joint_spacing(report.voxel_size, report.resolution,
-                            choose_parameter(get_parameter(np, internal_np::joint_spacing_factor_tag),
-                                             parameter_ranges::joint_spacing_factor.default_value)));
-  split_into_bones(curve, out,
-                   parameters::combine(parameters::smallest_radius(report.smallest_radius),
-                                       parameters::tip_joint_setback(report.tip_joint_setback),
-                                       parameters::joint_spacing(report.joint_spacing),
-                                       parameters::sheet_half_width_map(CGAL::make_property_map(sheet_widths)),
-                                       parameters::piece_radius_map(CGAL::make_property_map(piece_widths)), curve_np));
-  report.joints_moved_inside = internal::joints_on_vertices(out, moved_inside);
-  clock.finished("split_into_bones");
-  if(Skeleton* curve_output = internal::output_pointer<Skeleton>(np, internal_np::curve_skeleton_output_tag))
-    *curve_output = std::move(curve);
-
+  const internal::Control_skeleton_settings settings =
+      internal::control_skeleton_settings(np, "extract_control_skeleton");
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, mesh));
+  internal::extract_control_skeleton_with(
+      mesh, vpm, out, settings, internal::output_pointer<Skeleton>(np, internal_np::curve_skeleton_output_tag),
+      internal::output_pointer<Skeleton>(np, internal_np::thinned_skeleton_output_tag), clock, report);
   if(Reeb_graph<FaceGraph>* reeb = internal::output_pointer<Reeb_graph<FaceGraph>>(np, internal_np::reeb_graph_output_tag))
   {
     const std::size_t intervals =
