@@ -331,13 +331,6 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   internal::Bucket_queue queue;
   internal::voxel_dijkstra(solid, all_seeds, nearest, reached, queue,
                            [](std::uint32_t, internal::Voxel_distance) { return true; });
-  // The solid voxels at a corner of a cell with vertices: the only ones read at vertices.
-  std::vector<std::uint8_t> read_at_vertices(solid.size(), 0);
-  for(std::size_t cell = 0; cell < solid.layout.volume(); ++cell)
-    if(cells.has_vertices(cell))
-      for(std::ptrdiff_t offset : cells.corner_offsets)
-        if(const std::int32_t u = solid.solid_of_cell[std::size_t(std::ptrdiff_t(cell) + offset)]; u >= 0)
-          read_at_vertices[std::size_t(u)] = 1;
 
   // One bounded search per bone; each vertex finds the bone that heats it.
   internal::Heat_source_finder finder(n);
@@ -349,27 +342,24 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
                   ? 0
                   : internal::Voxel_distance(std::min(4e9, (s * (nearest[u] * internal::voxels_per_unit + 0.5) + 0.5) /
                                                                internal::voxels_per_unit));
-  std::vector<std::uint32_t> stamp(solid.layout.volume(), 0), touched_cells;
+  // The slots (cells with vertices) a search reached, each once per bone.
+  std::vector<std::uint32_t> stamp(cells.number_of_slots(), 0), touched_slots;
   for(std::size_t b = 0; b < bones; ++b)
   {
     reached.clear();
     internal::voxel_dijkstra(solid, seeds[b], distance, reached, queue,
                              [&](std::uint32_t u, internal::Voxel_distance d) { return d < stop[u]; });
     report.voxel_visits += reached.size();
-    touched_cells.clear();
+    touched_slots.clear();
     for(std::uint32_t u : reached)
-      if(read_at_vertices[u])
-        for(std::ptrdiff_t offset : cells.corner_offsets)
+      for(std::uint32_t k = cells.first_slot[u]; k < cells.first_slot[u + 1]; ++k)
+        if(const std::uint32_t slot = cells.slots[k]; stamp[slot] != b + 1)
         {
-          const std::size_t cell = std::size_t(std::ptrdiff_t(solid.cell_of_solid[u]) - offset);
-          if(stamp[cell] != b + 1 && cells.has_vertices(cell))
-          {
-            stamp[cell] = std::uint32_t(b + 1);
-            touched_cells.push_back(std::uint32_t(cell));
-          }
+          stamp[slot] = std::uint32_t(b + 1);
+          touched_slots.push_back(slot);
         }
-    for(std::uint32_t cell : touched_cells)
-      cells.read_cell(solid, cell, distance, [&](std::uint32_t v, double d) {
+    for(std::uint32_t slot : touched_slots)
+      cells.read_slot(solid, slot, distance, [&](std::uint32_t v, double d) {
         finder.add(v, std::uint32_t(b), d,
                    [&] { return internal::distance_to_polyline(cells.grid_point[v], polylines[b]); });
       });

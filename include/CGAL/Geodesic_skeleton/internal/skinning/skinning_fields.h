@@ -184,22 +184,33 @@ inline std::vector<std::uint32_t> rasterize_polyline(const Solid_voxels& solid, 
 // The mesh vertices grouped by the cell of voxel centres they lie in: the cell of base b
 // has the centres of the voxels b + {0, 1}^3 at its corners. A distance field known at the
 // voxel centres is read at a vertex as the least (value at a corner + distance from the
-// vertex to that corner), over the corners that have a value.
+// vertex to that corner), over the corners that have a value. Only the cells that hold
+// vertices are numbered (their slots), and each solid voxel knows the slots it is a corner
+// of: nothing is as large as the grid's box, which is most of the cost for a small mesh.
 struct Vertex_cells
 {
-  std::vector<Vec3> grid_point;           // each vertex in grid coordinates
-  std::vector<std::uint32_t> first;       // per layout cell: its vertices in `vertices[first[c] .. first[c + 1])`
-  std::vector<std::uint32_t> vertices;    // vertex indices, grouped by cell
-  std::vector<std::uint32_t> outside;     // vertices whose cell is not inside the layout
+  std::vector<Vec3> grid_point;          // each vertex in grid coordinates
+  std::vector<std::uint32_t> cell;       // per slot: the base cell (layout index), ascending
+  std::vector<std::uint32_t> first;      // per slot: its vertices in `vertices[first[s] .. first[s + 1])`
+  std::vector<std::uint32_t> vertices;   // vertex indices, grouped by slot
+  std::vector<std::uint32_t> outside;    // vertices whose cell is not inside the layout
+  std::vector<std::uint32_t> first_slot; // per solid voxel: its slots in `slots[first_slot[u] .. first_slot[u + 1])`
+  std::vector<std::uint32_t> slots;
   std::array<std::ptrdiff_t, 8> corner_offsets{};
-  std::array<Vec3, 8> corner_centre{};    // the corners' centres relative to the base voxel's corner
+  std::array<Vec3, 8> corner_centre{};   // the corners' centres relative to the base voxel's corner
 
   Vertex_cells(const Solid_voxels& solid, std::vector<Vec3> points_in_grid) : grid_point(std::move(points_in_grid))
   {
     const Grid_layout& layout = solid.layout;
-    const std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
-    std::vector<std::uint32_t> base(grid_point.size(), none);
-    first.assign(layout.volume() + 1, 0);
+    for(int i = 0; i < 8; ++i)
+    {
+      const int dx = i & 1, dy = (i >> 1) & 1, dz = (i >> 2) & 1;
+      corner_offsets[std::size_t(i)] = dx + dy * layout.stride_y + dz * layout.stride_z;
+      corner_centre[std::size_t(i)] = Vec3{dx + 0.5, dy + 0.5, dz + 0.5};
+    }
+    // The vertices by base cell, in vertex order within a cell.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> by_cell;
+    by_cell.reserve(grid_point.size());
     for(std::size_t v = 0; v < grid_point.size(); ++v)
     {
       const Vec3& g = grid_point[v];
@@ -207,49 +218,54 @@ struct Vertex_cells
                         int(floor_to_long(g[2] - 0.5))};
       if(layout.box.contains(k) && k.x + 1 < layout.box.max.x && k.y + 1 < layout.box.max.y &&
          k.z + 1 < layout.box.max.z)
-      {
-        base[v] = std::uint32_t(layout.index(k));
-        ++first[base[v] + 1];
-      }
+        by_cell.emplace_back(std::uint32_t(layout.index(k)), std::uint32_t(v));
       else
         outside.push_back(std::uint32_t(v));
     }
-    for(std::size_t c = 0; c < layout.volume(); ++c)
-      first[c + 1] += first[c];
-    vertices.resize(first.back());
-    std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
-    for(std::size_t v = 0; v < base.size(); ++v)
-      if(base[v] != none)
-        vertices[next[base[v]]++] = std::uint32_t(v);
-    for(int i = 0; i < 8; ++i)
+    std::sort(by_cell.begin(), by_cell.end());
+    vertices.reserve(by_cell.size());
+    for(std::size_t i = 0; i < by_cell.size(); ++i)
     {
-      const int dx = i & 1, dy = (i >> 1) & 1, dz = (i >> 2) & 1;
-      corner_offsets[std::size_t(i)] = dx + dy * layout.stride_y + dz * layout.stride_z;
-      corner_centre[std::size_t(i)] = Vec3{dx + 0.5, dy + 0.5, dz + 0.5};
+      if(i == 0 || by_cell[i].first != by_cell[i - 1].first)
+      {
+        cell.push_back(by_cell[i].first);
+        first.push_back(std::uint32_t(i));
+      }
+      vertices.push_back(by_cell[i].second);
     }
+    first.push_back(std::uint32_t(by_cell.size()));
+    // The slots of each solid voxel.
+    first_slot.assign(solid.size() + 1, 0);
+    for_each_corner_voxel(solid, [&](std::uint32_t, std::uint32_t u) { ++first_slot[u + 1]; });
+    for(std::size_t u = 0; u < solid.size(); ++u)
+      first_slot[u + 1] += first_slot[u];
+    slots.resize(first_slot.back());
+    std::vector<std::uint32_t> next(first_slot.begin(), first_slot.end() - 1);
+    for_each_corner_voxel(solid, [&](std::uint32_t slot, std::uint32_t u) { slots[next[u]++] = slot; });
   }
 
-  bool has_vertices(std::size_t cell) const { return first[cell] != first[cell + 1]; }
+  std::size_t number_of_slots() const { return cell.size(); }
 
-  // Calls f(vertex, value) for every vertex of the cell of base `cell` at which the field
-  // `distance` (per solid voxel) has a value, that value in voxels.
+  // Calls f(vertex, value) for every vertex of slot `slot` at which the field `distance`
+  // (per solid voxel) has a value, that value in voxels.
   template <typename Function>
-  void read_cell(const Solid_voxels& solid, std::size_t cell, const std::vector<Voxel_distance>& distance,
+  void read_slot(const Solid_voxels& solid, std::uint32_t slot, const std::vector<Voxel_distance>& distance,
                  Function f) const
   {
+    const std::size_t base = cell[slot];
     std::array<double, 8> corner;
     bool any = false;
     for(std::size_t i = 0; i < 8; ++i)
     {
-      const std::int32_t s = solid.solid_of_cell[std::size_t(std::ptrdiff_t(cell) + corner_offsets[i])];
+      const std::int32_t s = solid.solid_of_cell[std::size_t(std::ptrdiff_t(base) + corner_offsets[i])];
       const bool has_value = s >= 0 && distance[std::size_t(s)] != unreached;
       corner[i] = has_value ? distance[std::size_t(s)] * voxels_per_unit : HUGE_VAL;
       any = any || has_value;
     }
     if(!any)
       return;
-    const Voxel_key b = solid.layout.key(cell);
-    for(std::uint32_t k = first[cell]; k < first[cell + 1]; ++k)
+    const Voxel_key b = solid.layout.key(base);
+    for(std::uint32_t k = first[slot]; k < first[slot + 1]; ++k)
     {
       const std::uint32_t v = vertices[k];
       const Vec3 local{grid_point[v][0] - b.x, grid_point[v][1] - b.y, grid_point[v][2] - b.z};
@@ -259,6 +275,17 @@ struct Vertex_cells
           best = std::min(best, corner[i] + norm3(sub(local, corner_centre[i])));
       f(v, best);
     }
+  }
+
+private:
+  // f(slot, u) for each solid corner voxel u of each slot's cell.
+  template <typename Function>
+  void for_each_corner_voxel(const Solid_voxels& solid, Function f) const
+  {
+    for(std::uint32_t slot = 0; slot < cell.size(); ++slot)
+      for(std::ptrdiff_t offset : corner_offsets)
+        if(const std::int32_t u = solid.solid_of_cell[std::size_t(std::ptrdiff_t(cell[slot]) + offset)]; u >= 0)
+          f(slot, std::uint32_t(u));
   }
 };
 
