@@ -133,62 +133,6 @@ private:
   Clock::time_point m_start, m_stage_start;
 };
 
-// Checks every numeric parameter of the chain (given or default) against its range
-// (parameter_ranges.h), so that a bad value fails at once, before any voxel work, with a
-// message that names `caller`, the parameter and its range.
-template <typename NamedParameters>
-void check_control_skeleton_parameters(const NamedParameters& np, const std::string& caller)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  namespace ranges = parameter_ranges;
-  checked_parameter(ranges::resolution,
-                    choose_parameter(get_parameter(np, internal_np::resolution_tag), default_voxel_resolution),
-                    caller);
-  memory_limit(np, caller);
-  checked_parameter(ranges::small_piece_fraction,
-                    choose_parameter(get_parameter(np, internal_np::small_piece_fraction_tag),
-                                     ranges::small_piece_fraction.default_value),
-                    caller);
-  checked_parameter(ranges::spur_length_factor,
-                    choose_parameter(get_parameter(np, internal_np::spur_length_factor_tag),
-                                     ranges::spur_length_factor.default_value),
-                    caller);
-  checked_parameter(ranges::limb_protrusion_factor,
-                    choose_parameter(get_parameter(np, internal_np::limb_protrusion_factor_tag),
-                                     ranges::limb_protrusion_factor.default_value),
-                    caller);
-  checked_parameter(ranges::lone_path_detour_factor,
-                    choose_parameter(get_parameter(np, internal_np::lone_path_detour_factor_tag),
-                                     ranges::lone_path_detour_factor.default_value),
-                    caller);
-  checked_parameter(ranges::thin_part_radius,
-                    choose_parameter(get_parameter(np, internal_np::thin_part_radius_tag),
-                                     ranges::thin_part_radius.default_value),
-                    caller);
-  checked_parameter(ranges::smoothing_window,
-                    choose_parameter(get_parameter(np, internal_np::smoothing_window_tag),
-                                     static_cast<int>(ranges::smoothing_window.default_value)),
-                    caller);
-  bone_splitting_settings(np, caller); // tip_joint_setback and joint_spacing too, when given
-  checked_parameter(ranges::joint_spacing_factor,
-                    choose_parameter(get_parameter(np, internal_np::joint_spacing_factor_tag),
-                                     ranges::joint_spacing_factor.default_value),
-                    caller);
-  checked_parameter(ranges::level_of_detail_resolution,
-                    choose_parameter(get_parameter(np, internal_np::level_of_detail_resolution_tag),
-                                     default_voxel_resolution),
-                    caller);
-  checked_parameter(ranges::number_of_reeb_intervals,
-                    choose_parameter(get_parameter(np, internal_np::number_of_reeb_intervals_tag),
-                                     static_cast<std::size_t>(ranges::number_of_reeb_intervals.default_value)),
-                    caller);
-}
-
-} // namespace internal
-
-namespace internal {
-
 // The settings of extract_control_skeleton(), read from its named parameters; an empty
 // optional is a parameter not given, whose default depends on the grid.
 struct Control_skeleton_settings
@@ -220,38 +164,47 @@ std::optional<T> given_parameter(const NamedParameters& np, Tag tag, T)
     return static_cast<T>(CGAL::parameters::get_parameter(np, tag));
 }
 
-// Reads (and checks) every parameter of the chain.
+// Reads every parameter of the chain and checks it (given or default) against its range
+// (parameter_ranges.h), so that a bad value fails at once, before any voxel work, with a
+// message that names `caller`, the parameter and its range.
 template <typename NamedParameters>
 Control_skeleton_settings control_skeleton_settings(const NamedParameters& np, const std::string& caller)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   namespace ranges = parameter_ranges;
-  check_control_skeleton_parameters(np, caller);
+  auto checked = [&](const Parameter_range& range, auto tag, auto default_value) {
+    return checked_parameter(range, choose_parameter(get_parameter(np, tag), default_value), caller);
+  };
   Control_skeleton_settings s;
-  s.resolution = choose_parameter(get_parameter(np, internal_np::resolution_tag), default_voxel_resolution);
+  s.resolution = checked(ranges::resolution, internal_np::resolution_tag, default_voxel_resolution);
   s.fill_holes = choose_parameter(get_parameter(np, internal_np::fill_holes_tag), true);
   s.keep_surface_voxels = choose_parameter(get_parameter(np, internal_np::keep_surface_voxels_tag), true);
   s.memory_limit = memory_limit(np, caller);
+  s.small_piece_fraction = checked(ranges::small_piece_fraction, internal_np::small_piece_fraction_tag,
+                                   ranges::small_piece_fraction.default_value);
+  s.spur_length_factor = checked(ranges::spur_length_factor, internal_np::spur_length_factor_tag,
+                                 ranges::spur_length_factor.default_value);
+  s.limb_protrusion_factor = checked(ranges::limb_protrusion_factor, internal_np::limb_protrusion_factor_tag,
+                                     ranges::limb_protrusion_factor.default_value);
+  s.lone_path_detour_factor = checked(ranges::lone_path_detour_factor, internal_np::lone_path_detour_factor_tag,
+                                      ranges::lone_path_detour_factor.default_value);
+  checked(ranges::thin_part_radius, internal_np::thin_part_radius_tag, ranges::thin_part_radius.default_value);
   s.thin_part_radius = given_parameter(np, internal_np::thin_part_radius_tag, double());
-  s.small_piece_fraction = choose_parameter(get_parameter(np, internal_np::small_piece_fraction_tag),
-                                            ranges::small_piece_fraction.default_value);
-  s.spur_length_factor = choose_parameter(get_parameter(np, internal_np::spur_length_factor_tag),
-                                          ranges::spur_length_factor.default_value);
-  s.limb_protrusion_factor = choose_parameter(get_parameter(np, internal_np::limb_protrusion_factor_tag),
-                                              ranges::limb_protrusion_factor.default_value);
-  s.lone_path_detour_factor = choose_parameter(get_parameter(np, internal_np::lone_path_detour_factor_tag),
-                                               ranges::lone_path_detour_factor.default_value);
-  s.level_of_detail_resolution =
-      choose_parameter(get_parameter(np, internal_np::level_of_detail_resolution_tag), default_voxel_resolution);
+  checked(ranges::smoothing_window, internal_np::smoothing_window_tag,
+          static_cast<int>(ranges::smoothing_window.default_value));
   s.smoothing_window = given_parameter(np, internal_np::smoothing_window_tag, int());
+  s.split = bone_splitting_settings(np, caller); // checks tip_joint_setback and joint_spacing too, when given
+  s.joint_spacing_factor = checked(ranges::joint_spacing_factor, internal_np::joint_spacing_factor_tag,
+                                   ranges::joint_spacing_factor.default_value);
+  s.level_of_detail_resolution = checked(ranges::level_of_detail_resolution,
+                                         internal_np::level_of_detail_resolution_tag, default_voxel_resolution);
+  checked(ranges::number_of_reeb_intervals, internal_np::number_of_reeb_intervals_tag,
+          static_cast<std::size_t>(ranges::number_of_reeb_intervals.default_value)); // read with the Reeb graph
   s.smallest_radius = given_parameter(np, internal_np::smallest_radius_tag, double());
   s.tip_joint_setback = choose_parameter(get_parameter(np, internal_np::tip_joint_setback_tag),
                                          ranges::tip_joint_setback.default_value);
   s.joint_spacing = given_parameter(np, internal_np::joint_spacing_tag, double());
-  s.joint_spacing_factor = choose_parameter(get_parameter(np, internal_np::joint_spacing_factor_tag),
-                                            ranges::joint_spacing_factor.default_value);
-  s.split = bone_splitting_settings(np, caller);
   return s;
 }
 
