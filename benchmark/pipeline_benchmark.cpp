@@ -112,20 +112,16 @@ Pruning_counts pruning_counts(const Mesh& mesh, int resolution)
 {
   Pruning_counts c;
   gs::Dense_voxel_grid solid;
-  gs::voxelize(mesh, solid, gs::parameters::resolution(resolution));
-  // Above the level of detail's resolution, the skeleton there: the pieces its solid joins,
-  // and its end points.
-  std::optional<gs::Coarse_skeleton_level_of_detail> coarse;
-  if(resolution > gs::default_voxel_resolution)
-    coarse = gs::coarse_skeleton_level_of_detail(mesh, gs::default_voxel_resolution, solid.frame());
-  if(coarse)
-    gs::join_pieces_joined_on_coarser_grid(solid, coarse->solid);
+  // The stages up to pruning run on the grid of the level of detail (at most the default
+  // resolution); a finer grid routes the pruned skeleton's branches.
+  gs::voxelize(mesh, solid, gs::parameters::resolution((std::min)(resolution, gs::default_voxel_resolution)));
   const gs::Voxel_distance_field distances = gs::distance_transform(solid);
-  gs::Sheet_radii sheet_radii;
+  gs::Sheet_radii sheet_radii, slanted_sheet_radii;
   gs::thin(solid, distances,
            gs::parameters::combine(
                gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(sheet_radii)),
-               gs::parameters::thin_part_radius(gs::default_thin_part_radius(resolution))));
+               gs::parameters::slanted_sheet_radius_map(
+                   boost::associative_property_map<gs::Sheet_radii>(slanted_sheet_radii))));
   gs::Sparse_voxel_set skeleton;
   skeleton.reset(solid.frame(), solid.bounding_box());
   solid.for_each([&](const gs::Voxel_key& k) { skeleton.insert(k); });
@@ -136,8 +132,10 @@ Pruning_counts pruning_counts(const Mesh& mesh, int resolution)
   c.branched_before = gs::count_skeleton_points(skeleton).branched_connection;
 
   // The radius maps that extract_control_skeleton() gives prune_skeleton().
+  const gs::Sheet_radii widest_sheet = gs::widest_sheet_radius_of_pieces(skeleton, slanted_sheet_radii);
   const auto radius = gs::parameters::combine(gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(distances)),
-                                              gs::parameters::sheet_radius_map(gs::sheet_radius_in_voxels_map(sheet_radii)));
+                                              gs::parameters::sheet_radius_map(gs::sheet_radius_in_voxels_map(sheet_radii)),
+                                              gs::parameters::piece_radius_map(gs::sheet_radius_in_voxels_map(widest_sheet)));
   gs::Sparse_voxel_set algorithm_1 = skeleton;
   const gs::Pruning_report report_1 =
       gs::prune_skeleton(algorithm_1, gs::parameters::combine(radius, gs::parameters::spur_length_factor(0.0),
@@ -146,15 +144,7 @@ Pruning_counts pruning_counts(const Mesh& mesh, int resolution)
   c.regions = report_1.branched_regions;
   c.algorithm_1_branched = gs::count_skeleton_points(algorithm_1).branched_connection;
 
-  const double tolerance = gs::default_coarse_end_point_tolerance(resolution, gs::default_voxel_resolution);
-  c.pruning = gs::prune_skeleton(
-      skeleton, gs::parameters::combine(
-                    radius, gs::parameters::coarse_end_points(coarse ? &std::as_const(coarse->end_points) : nullptr),
-                    gs::parameters::coarse_end_point_tolerance(tolerance)));
-  if(coarse) // the limbs that the coarser skeleton ends in and this one lacks, grafted back
-    gs::graft_coarse_end_branches(skeleton, distances, coarse->end_points,
-                                  gs::parameters::coarse_end_point_tolerance(tolerance));
-  gs::route_lone_paths_through_the_middle(skeleton, distances); // a lone path, without its detour
+  c.pruning = gs::prune_skeleton(skeleton, radius);
   c.branched_after = gs::count_skeleton_points(skeleton).branched_connection;
   c.pruned = skeleton.size();
   return c;
@@ -199,9 +189,9 @@ int main(int argc, char* argv[])
   reeb_table << std::fixed << std::setprecision(2);
   bool all_agree = true;
   // Where our time goes: the median over the timed runs of each stage's time.
-  const std::vector<std::string> stages = {"voxelize", "level_of_detail", "join_pieces", "distance_transform", "thin",
-                                           "thinned_graph", "remove_small_pieces", "cut_spurious_cycles", "prune",
-                                           "to_graph", "smooth", "curve_points_inside", "split_into_bones"};
+  const std::vector<std::string> stages = {"voxelize", "distance_transform", "thin", "thinned_graph", "remove_small_pieces",
+                                           "cut_spurious_cycles", "prune", "voxelize_finer", "distance_transform_finer",
+                                           "route_on_finer_grid", "to_graph", "smooth", "curve_points_inside", "split_into_bones"};
   std::ostringstream stage_table;
   stage_table << "\n| mesh |";
   for(const std::string& stage : stages)
@@ -297,7 +287,10 @@ int main(int argc, char* argv[])
         prune_ms = ms;
     }
     const Pruning_counts counts = pruning_counts(mesh, resolution);
-    const bool agree = counts.pruned == ours.report.pruned.points && counts.thinned == ours.report.thinned.points;
+    // Above the default resolution the pruned skeleton is routed on the finer grid, and its
+    // points are counted there.
+    const bool agree = (resolution > gs::default_voxel_resolution || counts.pruned == ours.report.pruned.points) &&
+                       counts.thinned == ours.report.thinned.points;
     if(!agree)
     {
       all_agree = false;

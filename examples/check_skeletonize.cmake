@@ -9,7 +9,7 @@ foreach(path "input" "mesh;vertices" "mesh;faces" "mesh;closed" "mesh;components
              "timings_ms;total" "timings_ms;voxelize" "timings_ms;thin" "timings_ms;prune"
              "stages;thinned;points" "stages;thinned;end_points" "stages;thinned;junctions" "stages;thinned;cycles"
              "stages;pruned;points" "stages;pruned;end_points" "stages;pruned;junctions" "stages;pruned;cycles"
-             "stages;grafted;end_branches" "stages;routed;lone_paths"
+             "stages;routed;branches_along_level_of_detail" "stages;solid;voxels_joining_pieces"
              "stages;inside;curve_points_moved" "stages;inside;joints_moved"
              "computed" "timings_ms;read" "peak_memory_mib" "skeleton;points" "skeleton;radii" "skeleton;edges"
              "control;joints" "control;bones")

@@ -75,7 +75,6 @@ struct Options
   double spur_length_factor = ranges::spur_length_factor.default_value;
   double limb_protrusion_factor = ranges::limb_protrusion_factor.default_value;
   int level_of_detail_resolution = int(ranges::level_of_detail_resolution.default_value);
-  double lone_path_detour_factor = ranges::lone_path_detour_factor.default_value;
   std::optional<int> smoothing_window; // none: the library's default for the resolution
   std::optional<double> thin_part_radius; // none: the library's default for the resolution
   double bend_threshold = ranges::bend_threshold.default_value;
@@ -118,9 +117,7 @@ const Numeric_option numeric_options[] = {
     {"--limb-protrusion", "F", ranges::limb_protrusion_factor,
      "level of detail: snip end branches reaching less than F largest MAT radii out of their junction"},
     {"--level-of-detail-resolution", "N", ranges::level_of_detail_resolution,
-     "level of detail: a finer grid keeps no more end points than the skeleton at N has, ending where it ends (0: off)"},
-    {"--lone-path-detour", "F", ranges::lone_path_detour_factor,
-     "a piece without junction costing over F times the straight segment between its ends runs through the middle instead (0: off)"},
+     "level of detail: the skeleton's branches are decided at N; a finer resolution routes them on its grid (0: off)"},
     {"--smoothing-window", "W", ranges::smoothing_window, "points averaged along branches",
      "5 at resolution 64, scaled with it: 9 at 128"},
     {"--bend-threshold", "T", ranges::bend_threshold, "chord-to-point accumulation that makes a joint"},
@@ -269,7 +266,6 @@ Options parse_options(int argc, char** argv)
     else if(a == "--spur-length") o.spur_length_factor = parse_number<double>(a, value());
     else if(a == "--limb-protrusion") o.limb_protrusion_factor = parse_number<double>(a, value());
     else if(a == "--level-of-detail-resolution") o.level_of_detail_resolution = parse_number<int>(a, value());
-    else if(a == "--lone-path-detour") o.lone_path_detour_factor = parse_number<double>(a, value());
     else if(a == "--smoothing-window") o.smoothing_window = parse_number<int>(a, value());
     else if(a == "--bend-threshold") o.bend_threshold = parse_number<double>(a, value());
     else if(a == "--straightness") o.straightness_tolerance = parse_number<double>(a, value());
@@ -587,7 +583,6 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
         params::spur_length_factor(o.spur_length_factor),
         params::limb_protrusion_factor(o.limb_protrusion_factor),
         params::level_of_detail_resolution(o.level_of_detail_resolution),
-        params::lone_path_detour_factor(o.lone_path_detour_factor),
         params::smoothing_window(o.smoothing_window.value_or(gs::default_smoothing_window(o.resolution))),
         params::bend_threshold(o.bend_threshold), params::straightness_tolerance(o.straightness_tolerance),
         params::minimum_bone_length_factor(o.minimum_bone_length_factor),
@@ -633,13 +628,12 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
       timings["skinning_weights"] = skinning.report.milliseconds;
     nlohmann::json stages = {
         {"solid", {{"voxels", report.solid_voxels}, {"pieces", report.small_pieces.pieces},
-                   {"pieces_joined", report.pieces_joined},
+                   {"voxels_joining_pieces", report.voxels_joining_pieces},
                    {"small_pieces_removed", report.small_pieces.removed_pieces}}},
         {"thinned", stage_json(report.thinned)},
         {"spurious_cycles", {{"cut", report.spurious_cycles_cut}}},
         {"pruned", stage_json(report.pruned)},
-        {"grafted", {{"end_branches", report.coarse_end_branches_grafted}}},
-        {"routed", {{"lone_paths", report.lone_paths_routed}}},
+        {"routed", {{"branches_along_level_of_detail", report.branches_along_level_of_detail}}},
         {"inside", {{"curve_points_moved", report.curve_points_moved_inside},
                     {"joints_moved", report.joints_moved_inside}}}};
     nlohmann::json computed = {"curve_skeleton", "control_skeleton"};
@@ -665,7 +659,6 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
                         {"spur_length_factor", o.spur_length_factor},
                         {"limb_protrusion_factor", o.limb_protrusion_factor},
                         {"level_of_detail_resolution", o.level_of_detail_resolution},
-                        {"lone_path_detour_factor", o.lone_path_detour_factor},
                         {"smoothing_window", report.smoothing_window},
                         {"bend_threshold", o.bend_threshold},
                         {"straightness_tolerance", o.straightness_tolerance},

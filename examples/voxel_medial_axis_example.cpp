@@ -16,12 +16,9 @@
 #include <CGAL/Geodesic_skeleton/Skeleton_radius_in_voxels_map.h>
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
-#include <CGAL/Geodesic_skeleton/coarse_skeleton_end_points.h>
-#include <CGAL/Geodesic_skeleton/graft_coarse_end_branches.h>
-#include <CGAL/Geodesic_skeleton/route_lone_paths_through_the_middle.h>
+#include <CGAL/Geodesic_skeleton/route_skeleton_on_finer_grid.h>
 #include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
-#include <CGAL/Geodesic_skeleton/join_pieces_joined_on_coarser_grid.h>
 #include <CGAL/Geodesic_skeleton/prune_skeleton.h>
 #include <CGAL/Geodesic_skeleton/sheet_half_widths.h>
 #include <CGAL/Geodesic_skeleton/skeleton_statistics.h>
@@ -67,35 +64,25 @@ int main(int argc, char* argv[])
   try
   {
     //! [voxel_medial_axis]
-    // 1. The solid interior, on a grid aligned with the mesh's principal axes.
+    // 1. The solid interior, on a grid aligned with the mesh's principal axes. Which
+    //    branches the rig has is decided on the default grid (the level of detail); a finer
+    //    grid only places them more precisely (step 8).
+    const int pruning_resolution = (std::min)(resolution, GS::default_voxel_resolution);
     GS::Dense_voxel_grid solid;
-    GS::voxelize(mesh, solid, GS::parameters::resolution(resolution));
-
-    //    On a grid finer than the default one, the skeleton that the same stages give on the
-    //    default grid, in this grid's coordinates: the rig's level of detail, which the
-    //    stages below keep whatever the resolution. The pieces that its solid joins (parts
-    //    within about a voxel of that grid of each other) are joined on this grid too.
-    const bool finer_than_default = resolution > GS::default_voxel_resolution;
-    std::optional<GS::Coarse_skeleton_level_of_detail> coarse;
-    if(finer_than_default)
-      coarse = GS::coarse_skeleton_level_of_detail(mesh, GS::default_voxel_resolution, solid.frame());
-    if(coarse)
-      GS::join_pieces_joined_on_coarser_grid(solid, coarse->solid);
+    GS::voxelize(mesh, solid, GS::parameters::resolution(pruning_resolution));
 
     // 2. The squared distance of every voxel to the outside: the MAT radius function.
-    const GS::Voxel_distance_field distances = GS::distance_transform(solid);
+    GS::Voxel_distance_field distances = GS::distance_transform(solid);
 
     // 3. The grassfire: a one-voxel-thick curve skeleton with the solid's topology, and
     //    the sheet radius of its voxels (the half width of a thin sheet, measured in it),
     //    read at one level of distance and across close levels (a thick slanted plate).
-    //    The parts thin at the default resolution are thin at this one too.
     GS::Sheet_radii sheet_radii, slanted_sheet_radii;
     GS::thin(solid, distances,
              GS::parameters::combine(
                  GS::parameters::sheet_radius_map(boost::associative_property_map<GS::Sheet_radii>(sheet_radii)),
                  GS::parameters::slanted_sheet_radius_map(
-                     boost::associative_property_map<GS::Sheet_radii>(slanted_sheet_radii)),
-                 GS::parameters::thin_part_radius(GS::default_thin_part_radius(resolution))));
+                     boost::associative_property_map<GS::Sheet_radii>(slanted_sheet_radii))));
     GS::Sparse_voxel_set skeleton;
     skeleton.reset(solid.frame(), solid.bounding_box());
     solid.for_each([&](const GS::Voxel_key& k) { skeleton.insert(k); });
@@ -104,55 +91,53 @@ int main(int argc, char* argv[])
     // 4. The loops that parts closer than a voxel made, which the mesh has no handle for.
     const std::size_t cut = GS::cut_spurious_cycles(skeleton, mesh);
 
-    // 5. Each piece's twigs are judged against its widest sheet, read across close levels on
-    //    the default grid and coarser; on a finer grid that reading reaches across the levels
-    //    of a thick block, and the sheet is read at one level, as extract_control_skeleton() does.
-    const GS::Sheet_radii widest_sheet =
-        GS::widest_sheet_radius_of_pieces(skeleton, finer_than_default ? sheet_radii : slanted_sheet_radii);
+    // 5. Each piece's twigs are judged against its widest sheet, read across close levels.
+    const GS::Sheet_radii widest_sheet = GS::widest_sheet_radius_of_pieces(skeleton, slanted_sheet_radii);
 
     // 6. The paper's pruning; twigs are snipped by the MAT radius (in voxels), or in a
     //    thin sheet by its half width, and so are the branches inside the MAT balls of
-    //    the rest of the skeleton; with coarse end points, the end branches they do not have.
-    const double tolerance = GS::default_coarse_end_point_tolerance(resolution, GS::default_voxel_resolution);
+    //    the rest of the skeleton.
     const GS::Pruning_report pruning = GS::prune_skeleton(
-        skeleton,
-        GS::parameters::combine(
-            GS::parameters::mat_radius_map(GS::mat_radius_in_voxels_map(distances)),
-            GS::parameters::sheet_radius_map(GS::sheet_radius_in_voxels_map(sheet_radii)),
-            GS::parameters::piece_radius_map(GS::sheet_radius_in_voxels_map(widest_sheet)),
-            GS::parameters::coarse_end_points(coarse ? &coarse->end_points : nullptr),
-            GS::parameters::coarse_end_point_tolerance(tolerance)));
-    //    The limbs that the coarser skeleton ends in and thinning left this one without (a
-    //    leg thinned to a stub), grafted back along the middle of the solid.
-    const std::size_t grafted =
-        coarse ? GS::graft_coarse_end_branches(skeleton, distances, coarse->end_points,
-                                               GS::parameters::coarse_end_point_tolerance(tolerance))
-               : 0;
-    //    A piece that is a lone path keeps its ends, not a detour that thinning took between
-    //    them across a thick sheet: it runs through the middle of the solid.
-    const std::size_t routed = GS::route_lone_paths_through_the_middle(skeleton, distances);
+        skeleton, GS::parameters::combine(GS::parameters::mat_radius_map(GS::mat_radius_in_voxels_map(distances)),
+                                          GS::parameters::sheet_radius_map(GS::sheet_radius_in_voxels_map(sheet_radii)),
+                                          GS::parameters::piece_radius_map(GS::sheet_radius_in_voxels_map(widest_sheet))));
 
-    // 7. The curve skeleton graph: points in the mesh's coordinates, radii, mesh vertices.
+    // 7. On a finer grid, the same branches routed through the middle of its solid, which
+    //    keeps the links of the pruned skeleton where the finer grid separates parts.
+    std::size_t along_coarser = 0;
+    if(resolution > pruning_resolution)
+    {
+      GS::Dense_voxel_grid fine_solid;
+      GS::voxelize(mesh, fine_solid, GS::parameters::resolution(resolution));
+      GS::add_skeleton_to_solid(skeleton, fine_solid);
+      GS::Voxel_distance_field fine_distances = GS::distance_transform(fine_solid);
+      GS::Sparse_voxel_set fine_skeleton;
+      fine_skeleton.reset(fine_solid.frame(), fine_solid.bounding_box());
+      GS::Coarser_voxel_map coarser_voxel;
+      along_coarser = GS::route_skeleton_on_finer_grid(skeleton, distances, fine_distances, fine_skeleton, coarser_voxel);
+      skeleton = std::move(fine_skeleton);
+      distances = std::move(fine_distances);
+    }
+
+    // 8. The curve skeleton graph: points in the mesh's coordinates, radii, mesh vertices.
     GS::Curve_skeleton<Point, vertex_descriptor> curve;
     GS::to_graph(skeleton, distances, mesh, curve);
     const GS::Skeleton_statistics shape = GS::skeleton_statistics(curve);
     //! [voxel_medial_axis]
 
     std::cout << "solid voxels:        " << distances.box().volume() << " in the box, voxel size "
-              << solid.frame().voxel_size() << "\n"
+              << distances.frame().voxel_size() << "\n"
               << "thinned skeleton:    " << thinned.total() << " voxels, " << thinned.end << " end points, "
               << thinned.branched_connection << " branched connection points\n"
               << "spurious cycles cut: " << cut << "\n"
               << "pruning:             " << pruning.branched_regions << " branched regions, "
               << pruning.removed_branched_points << " branched points and " << pruning.snipped_points
-              << " twig points removed, " << routed << " lone paths routed through the middle\n"
+              << " twig points removed\n"
               << "curve skeleton:      " << shape.points << " points, " << shape.end_points << " ends, "
               << shape.junctions << " junctions, " << shape.cycles << " cycles\n";
-    if(coarse)
-      std::cout << "level of detail:     " << coarse->end_points.size() << " end points at resolution "
-                << GS::default_voxel_resolution << ", " << pruning.snipped_beyond_coarse_detail
-                << " branches snipped beyond it, " << pruning.cut_back_branches << " cut back to it, " << grafted
-                << " grafted\n";
+    if(resolution > pruning_resolution)
+      std::cout << "level of detail:     branches of resolution " << pruning_resolution << " routed at "
+                << resolution << ", " << along_coarser << " along the coarser grid's voxels\n";
   }
   catch(const std::exception& e)
   {

@@ -274,100 +274,26 @@ BOOST_AUTO_TEST_CASE(a_rig_keeps_its_size_when_the_resolution_doubles)
   }
 }
 
-// The end of a block has four corners: at 64 thinning merges them into two branches, at 128
-// all four come out, each reaching out of the junction's ball as far as the two did. With
-// the level of detail of the default grid, resolution 128 keeps as many end points as 64.
-// Meshes whose branches end elsewhere at 128 than at 64. The lion's head and the head are
-// open at the neck, with as many end points at both resolutions: at 64 the lion's chain
-// runs from the jaw to the back of the head and the head's from the neck to the middle of
-// the head, while at 128 the snipping took the stub that ends there and kept a branch down
-// the open neck or to the chin: the stub is swapped back in for it. Homer's arms at 128
-// curl on into the fingers past where 64 ends them: they are cut back there. Every end
-// point at 128 then lies near one at 64 (within the tolerance, 4 voxels of the default
-// grid), and the two heads have as many joints as at 64.
-BOOST_AUTO_TEST_CASE(a_finer_grid_ends_where_the_default_one_does)
+// Which branches the rig has is decided on the grid of the level of detail: a finer grid
+// routes them, with the same end points, junctions and cycles, and ends each branch near
+// where the default grid does.
+BOOST_AUTO_TEST_CASE(a_finer_grid_has_the_branches_of_the_default_one)
 {
-  for(const char* name : {"lion.off", "head.off", "homer.off"})
+  for(const char* name : {"cow.off", "camel.off", "dino.off", "elephant.off", "man.off", "handle.off"})
   {
     BOOST_TEST_CONTEXT(name)
     {
       const Rigs_at_64_and_128 rigs = rigs_at_64_and_128(test::demo_mesh<Mesh>(name));
-      const double tolerance = 4 * rigs.coarse.voxel_size;
-      BOOST_TEST(!end_points_of(rigs.at_128).empty());
-      BOOST_TEST(farthest_end_point_from(rigs.at_128, rigs.at_64) <= tolerance);
-      BOOST_TEST(farthest_end_point_from(rigs.every_branch_at_128, rigs.at_64) > tolerance);
-      BOOST_TEST(rigs.coarse.pruning.cut_back_branches == 0u);
-      BOOST_TEST(rigs.coarse.pruning.swapped_for_coarse_end_branches == 0u);
-      if(std::string(name) == "homer.off")
-      {
-        BOOST_TEST(rigs.fine.pruning.cut_back_branches >= 2u);
-        BOOST_TEST(rigs.fine.pruning.cut_back_points > rigs.fine.pruning.cut_back_branches);
-      }
-      else
-      {
-        BOOST_TEST(rigs.fine.pruning.swapped_for_coarse_end_branches >= 1u);
-        BOOST_TEST(num_vertices(rigs.at_128) == num_vertices(rigs.at_64));
-      }
-    }
-  }
-}
-
-BOOST_AUTO_TEST_CASE(a_finer_grid_keeps_the_end_points_of_the_default_one)
-{
-  for(const char* name : {"handle.off", "dragknob.off"})
-  {
-    BOOST_TEST_CONTEXT(name)
-    {
-      const Rigs_at_64_and_128 rigs = rigs_at_64_and_128(test::demo_mesh<Mesh>(name));
-      const std::size_t ends_at_64 = joints_of_kind(rigs.at_64, gs::Joint_kind::end);
-      BOOST_TEST(joints_of_kind(rigs.at_128, gs::Joint_kind::end) == ends_at_64);
-      BOOST_TEST(joints_of_kind(rigs.every_branch_at_128, gs::Joint_kind::end) > ends_at_64);
-      BOOST_TEST(rigs.coarse.pruning.snipped_beyond_coarse_detail == 0u);
-      BOOST_TEST(rigs.fine.pruning.snipped_beyond_coarse_detail >= 1u);
+      BOOST_TEST(rigs.fine.pruned.end_points == rigs.coarse.pruned.end_points);
+      BOOST_TEST(rigs.fine.pruned.cycles == rigs.coarse.pruned.cycles);
+      BOOST_TEST(rigs.fine.pruned.components == rigs.coarse.pruned.components);
+      BOOST_TEST(rigs.fine.branches_along_level_of_detail == 0u);
       BOOST_TEST(rigs.fine.level_of_detail_resolution == 64);
+      BOOST_TEST(farthest_end_point_from(rigs.at_128, rigs.at_64) <= 4 * rigs.coarse.voxel_size);
     }
   }
   const Mesh cow = test::demo_mesh<Mesh>("cow.off");
   Control c;
-  // The end points that extract_control_skeleton() passes on, asked for directly: as many
-  // as the rig at 64 has, inside the grid; none for a mesh without volume at that
-  // resolution; bad input is an error, as in the stages.
-  gs::Dense_voxel_grid handle_at_128;
-  const Mesh handle = test::demo_mesh<Mesh>("handle.off");
-  gs::voxelize(handle, handle_at_128, gs::parameters::resolution(128));
-  const auto handle_ends = gs::coarse_skeleton_end_points(handle, 64, handle_at_128.frame());
-  Control handle_at_64;
-  gs::extract_control_skeleton(handle, handle_at_64);
-  BOOST_REQUIRE(handle_ends.has_value());
-  BOOST_TEST(handle_ends->size() == joints_of_kind(handle_at_64, gs::Joint_kind::end));
-  const gs::Voxel_box box = handle_at_128.bounding_box();
-  for(const std::array<double, 3>& p : *handle_ends)
-    BOOST_TEST((p[0] >= box.min.x - 1 && p[0] <= box.max.x + 2 && p[1] >= box.min.y - 1 && p[1] <= box.max.y + 2 &&
-                p[2] >= box.min.z - 1 && p[2] <= box.max.z + 2));
-  BOOST_TEST(gs::default_coarse_end_point_tolerance(128, 64) == 8.);
-  // The same end points as part of the level of detail, and a piece point for every voxel
-  // of the coarse skeleton before pruning; the handle is one thick piece, without a sheet
-  // wider than the two rounds of a shell.
-  const auto handle_detail = gs::coarse_skeleton_level_of_detail(handle, 64, handle_at_128.frame());
-  BOOST_REQUIRE(handle_detail.has_value());
-  BOOST_TEST((handle_detail->end_points == *handle_ends));
-  BOOST_TEST(handle_detail->piece_points.size() == handle_detail->piece_half_widths.size());
-  BOOST_TEST(handle_detail->piece_points.size() > handle_ends->size());
-  for(double w : handle_detail->piece_half_widths)
-    BOOST_TEST(w >= 0.);
-  test::Soup sheet; // a flat open square: no volume at any resolution
-  sheet.add_point(0, 0, 0);
-  sheet.add_point(1, 0, 0);
-  sheet.add_point(1, 1, 0);
-  sheet.add_point(0, 1, 0);
-  sheet.add_quad(0, 1, 2, 3);
-  const Mesh open_sheet = test::mesh_of<Mesh>(sheet);
-  BOOST_TEST(!gs::coarse_skeleton_end_points(open_sheet, 64, handle_at_128.frame()).has_value());
-  BOOST_TEST(!gs::coarse_skeleton_level_of_detail(open_sheet, 64, handle_at_128.frame()).has_value());
-  Mesh nan_cow = cow;
-  nan_cow.point(*vertices(nan_cow).begin()) = Point(std::nan(""), 0, 0);
-  BOOST_CHECK_THROW(gs::coarse_skeleton_end_points(nan_cow, 64, handle_at_128.frame()), std::invalid_argument);
-
   BOOST_CHECK_THROW(gs::extract_control_skeleton(cow, c, gs::parameters::level_of_detail_resolution(-1)),
                     std::invalid_argument);
   BOOST_CHECK_THROW(gs::extract_control_skeleton(cow, c, gs::parameters::level_of_detail_resolution(9000)),
@@ -375,40 +301,28 @@ BOOST_AUTO_TEST_CASE(a_finer_grid_keeps_the_end_points_of_the_default_one)
 }
 
 // The tripod's three legs are one thick block each; at 128 thinning leaves one of them a
-// stub that pruning takes, and the level of detail grafts the leg back: the rig has the
-// tripod's three ends at both resolutions.
+// stub that pruning takes; routed from the default grid, the rig has the tripod's three ends
+// at both resolutions.
 BOOST_AUTO_TEST_CASE(a_finer_grid_keeps_the_limbs_of_the_default_one)
 {
   const Rigs_at_64_and_128 rigs = rigs_at_64_and_128(test::demo_mesh<Mesh>("tripod.off"));
   BOOST_TEST(joints_of_kind(rigs.at_64, gs::Joint_kind::end) == 3u);
   BOOST_TEST(joints_of_kind(rigs.at_128, gs::Joint_kind::end) == 3u);
   BOOST_TEST(joints_of_kind(rigs.every_branch_at_128, gs::Joint_kind::end) == 2u);
-  BOOST_TEST(rigs.coarse.coarse_end_branches_grafted == 0u);
-  BOOST_TEST(rigs.fine.coarse_end_branches_grafted == 1u);
   BOOST_TEST(farthest_end_point_from(rigs.at_128, rigs.at_64) <= 4 * rigs.coarse.voxel_size);
 }
 
 // patch-01 is a height field that closing its holes makes a dome: a thick, flat part whose
-// medial surface is a sheet. At 64 thinning leaves a U across the sheet between the two
-// ends that pruning keeps, which the split cuts into two bones; at 128 a path straight
-// between them. Routed through the middle, the U is that straight path: one bone at both.
+// medial surface is a sheet, on which thinning may leave any curve between the two ends that
+// pruning keeps. The finer grid routes the default grid's curve: as many joints at both.
 BOOST_AUTO_TEST_CASE(a_thick_dome_gets_as_many_joints_at_both_resolutions)
 {
   const Mesh dome = test::demo_mesh<Mesh>("patch-01.off");
   const Rigs_at_64_and_128 rigs = rigs_at_64_and_128(dome);
-  BOOST_TEST(rigs.coarse.lone_paths_routed == 1u);
   BOOST_TEST(rigs.coarse.pruned.end_points == 2u);
   BOOST_TEST(rigs.coarse.pruned.junctions == 0u);
   BOOST_TEST(num_vertices(rigs.at_64) == num_vertices(rigs.at_128));
-  BOOST_TEST(num_edges(rigs.at_64) == 1u);
-  Control with_detour;
-  // The split's own bones (the spacing would cut the long U into more).
-  gs::extract_control_skeleton(dome, with_detour,
-                               gs::parameters::combine(gs::parameters::lone_path_detour_factor(0.0),
-                                                       gs::parameters::joint_spacing_factor(0.0)));
-  BOOST_TEST(num_edges(with_detour) == 2u);
-  BOOST_CHECK_THROW(gs::extract_control_skeleton(dome, with_detour, gs::parameters::lone_path_detour_factor(-1.0)),
-                    std::invalid_argument);
+  BOOST_TEST(rigs.fine.pruned.end_points == 2u);
 }
 
 // The elephant's ears are thin flaps: thinning leaves a bush of rim branches in each, which
@@ -534,12 +448,12 @@ BOOST_AUTO_TEST_CASE(pieces_the_default_grid_joins_are_one_tree_at_any_resolutio
   const gs::Control_skeleton_report r_alone = gs::extract_control_skeleton(
       mesh, at_128_alone,
       gs::parameters::combine(gs::parameters::resolution(128), gs::parameters::level_of_detail_resolution(0)));
-  BOOST_TEST(r_64.pieces_joined == 0u);
+  BOOST_TEST(r_64.voxels_joining_pieces == 0u);
   BOOST_TEST(r_64.pruned.components == 2u);
-  BOOST_TEST(r_128.pieces_joined == 1u);
+  BOOST_TEST(r_128.voxels_joining_pieces > 0u);
   BOOST_TEST(r_128.pruned.components == r_64.pruned.components);
   BOOST_TEST(at_128[boost::graph_bundle].roots.size() == at_64[boost::graph_bundle].roots.size());
-  BOOST_TEST(r_alone.pieces_joined == 0u);
+  BOOST_TEST(r_alone.voxels_joining_pieces == 0u);
   BOOST_TEST(r_alone.pruned.components == 3u);
 }
 
@@ -731,9 +645,8 @@ BOOST_AUTO_TEST_CASE(the_report_and_the_visitor_see_every_stage)
     void stage_finished(const std::string& stage, double) { stages->push_back(stage); }
   };
   const std::vector<std::string> documented = {
-      "voxelize", "level_of_detail", "join_pieces", "distance_transform", "thin", "thinned_graph",
-      "remove_small_pieces", "cut_spurious_cycles", "prune", "to_graph", "smooth", "curve_points_inside",
-      "split_into_bones", "reeb_graph"};
+      "voxelize", "distance_transform", "thin", "thinned_graph", "remove_small_pieces", "cut_spurious_cycles",
+      "prune", "route_on_finer_grid", "to_graph", "smooth", "curve_points_inside", "split_into_bones", "reeb_graph"};
   std::vector<std::string> stages;
   Curve curve;
   gs::Reeb_graph<Mesh> reeb;
@@ -815,21 +728,6 @@ BOOST_AUTO_TEST_CASE(a_chain_kept_beside_a_sheet_is_split_at_the_level_of_detail
   BOOST_TEST(num_edges(control) < num_edges(along_the_chain));
 }
 
-// Each vertex of a curve skeleton reads the piece width of the coarse piece point nearest the
-// centre of its voxel; without piece points, every width is 0.
-BOOST_AUTO_TEST_CASE(a_vertex_reads_the_width_of_the_nearest_coarse_piece)
-{
-  Curve curve;
-  for(const gs::Voxel_key& k : {gs::Voxel_key{0, 0, 0}, gs::Voxel_key{10, 0, 0}, gs::Voxel_key{4, 3, 0}})
-    curve[add_vertex(curve)].voxel = k;
-  gs::Coarse_skeleton_level_of_detail coarse;
-  coarse.piece_points = {{1.0, 0.5, 0.5}, {11.0, 0.5, 0.5}, {4.5, 6.5, 0.5}};
-  coarse.piece_half_widths = {1.5, 2.5, 0.0};
-  const std::vector<double> widths = gs::coarse_piece_half_widths(curve, coarse);
-  BOOST_TEST((widths == std::vector<double>{1.5, 2.5, 0.0}));
-  BOOST_TEST((gs::coarse_piece_half_widths(curve, gs::Coarse_skeleton_level_of_detail()) ==
-              std::vector<double>(3, 0.0)));
-}
 
 // The measure of a rig stable across resolutions: the joints at 128 within 25 % of
 // those at the default resolution.
@@ -843,23 +741,6 @@ void check_joints_at_128_within_a_quarter_of_those_at_64(const Mesh& mesh)
   BOOST_TEST(ratio <= 1.25);
 }
 
-// boeing.off is plates without thickness beside bars, one piece. The rounds of the burn that
-// measure its widest sheet give a half width of 13.5 at 64 and 9.4 at 128 (a finer grid does
-// not double them), so at 128 the piece was split at a finer level of detail than at 64: 7
-// joints against 5, the chain's corners along the bars cut. With the coarser grid's width as
-// the least piece radius, 128 splits it at the level of detail of 64.
-BOOST_AUTO_TEST_CASE(a_piece_is_split_at_least_at_the_width_the_coarser_grid_measures)
-{
-  const Mesh mesh = test::demo_mesh<Mesh>("boeing.off");
-  gs::Dense_voxel_grid solid;
-  gs::voxelize(mesh, solid, gs::parameters::resolution(128));
-  const auto coarse = gs::coarse_skeleton_level_of_detail(mesh, 64, solid.frame());
-  BOOST_REQUIRE(coarse.has_value());
-  const double widest = *std::max_element(coarse->piece_half_widths.begin(), coarse->piece_half_widths.end());
-  BOOST_TEST(widest > 60 * solid.frame().voxel_size()); // 13.5, voxels of 0.1875
-
-  check_joints_at_128_within_a_quarter_of_those_at_64(mesh);
-}
 
 // anchor.off's slanted plate is about eight voxels thick at 64, and its middle lies on
 // levels of distance less than half a voxel apart, side by side in strips: read at one
@@ -923,8 +804,6 @@ BOOST_AUTO_TEST_CASE(the_public_stages_composed_by_hand_give_the_same_skeleton)
                          gs::parameters::combine(gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(distances)),
                                                  gs::parameters::sheet_radius_map(gs::sheet_radius_in_voxels_map(sheet_radii)),
                                                  gs::parameters::piece_radius_map(gs::sheet_radius_in_voxels_map(widest_sheet))));
-      // A piece that is a lone path keeps its ends, not a detour thinning took between them.
-      gs::route_lone_paths_through_the_middle(skeleton, distances);
       Curve curve;
       gs::to_graph(skeleton, distances, mesh, curve, with_surface);
       gs::smooth_skeleton(curve);
@@ -956,10 +835,9 @@ BOOST_AUTO_TEST_CASE(the_public_stages_composed_by_hand_give_the_same_skeleton)
 BOOST_AUTO_TEST_CASE(the_stages_composed_by_hand_on_a_finer_grid_give_the_same_skeleton)
 {
   // Above its level_of_detail_resolution (the default resolution), extract_control_skeleton()
-  // also runs the voxel stages at that resolution, and their skeleton guides pruning and
-  // the split on the finer grid; the settings measured in voxels scale with the grid. The
-  // same calls made by hand give exactly its output. At 128 the cow's pruning swaps a branch
-  // and cuts one back to where the skeleton at 64 ends.
+  // runs the stages up to pruning at that resolution, then routes the pruned skeleton's
+  // branches on the finer grid; the settings measured in voxels scale with the grid. The
+  // same calls made by hand give exactly its output.
   const Mesh mesh = test::demo_mesh<Mesh>("cow.off");
   Control expected;
   Curve expected_curve;
@@ -968,55 +846,56 @@ BOOST_AUTO_TEST_CASE(the_stages_composed_by_hand_on_a_finer_grid_give_the_same_s
 
   //! [composed_chain_on_a_finer_grid]
   const int resolution = 128, coarse_resolution = gs::default_voxel_resolution;
+  // The stages up to pruning, on the grid of the level of detail: they decide the branches.
   gs::Dense_voxel_grid solid;
   gs::Voxelized_surface surface;
-  gs::voxelize(mesh, solid, gs::parameters::combine(gs::parameters::resolution(resolution),
+  gs::voxelize(mesh, solid, gs::parameters::combine(gs::parameters::resolution(coarse_resolution),
                                                     gs::parameters::voxelized_surface_output(&surface)));
   const auto with_surface = gs::parameters::voxelized_surface(&std::as_const(surface));
-  // The skeleton at the coarser resolution, in this grid's coordinates: the pieces its solid
-  // joins are joined here too, its end points bound the end points that pruning keeps, and
-  // its pieces' widest sheets the level of detail.
-  const std::optional<gs::Coarse_skeleton_level_of_detail> coarse =
-      gs::coarse_skeleton_level_of_detail(mesh, coarse_resolution, solid.frame());
-  if(coarse)
-    gs::join_pieces_joined_on_coarser_grid(solid, coarse->solid);
   const gs::Voxel_distance_field distances = gs::distance_transform(solid);
-  gs::Sheet_radii sheet_radii;
+  gs::Sheet_radii sheet_radii, slanted_sheet_radii;
   gs::thin(solid, distances,
-           gs::parameters::combine(gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(sheet_radii)),
-                                   gs::parameters::thin_part_radius(gs::default_thin_part_radius(resolution))));
+           gs::parameters::combine(
+               gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(sheet_radii)),
+               gs::parameters::slanted_sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(slanted_sheet_radii))));
   gs::Sparse_voxel_set skeleton;
   skeleton.reset(solid.frame(), solid.bounding_box());
   solid.for_each([&](const gs::Voxel_key& k) { skeleton.insert(k); });
   gs::remove_small_pieces(skeleton, distances);
   gs::cut_spurious_cycles(skeleton, mesh, with_surface);
-  const gs::Sheet_radii widest_sheet = gs::widest_sheet_radius_of_pieces(skeleton, sheet_radii);
-  const double tolerance = gs::default_coarse_end_point_tolerance(resolution, coarse_resolution);
-  gs::prune_skeleton(
-      skeleton,
-      gs::parameters::combine(
-          gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(distances)),
-          gs::parameters::sheet_radius_map(gs::sheet_radius_in_voxels_map(sheet_radii)),
-          gs::parameters::coarse_end_points(coarse ? &coarse->end_points : nullptr),
-          gs::parameters::coarse_end_point_tolerance(tolerance)));
-  // The limbs that the coarser skeleton ends in and this one lacks, grafted back.
-  if(coarse)
-    gs::graft_coarse_end_branches(skeleton, distances, coarse->end_points,
-                                  gs::parameters::coarse_end_point_tolerance(tolerance));
-  gs::route_lone_paths_through_the_middle(skeleton, distances);
+  const gs::Sheet_radii widest_sheet = gs::widest_sheet_radius_of_pieces(skeleton, slanted_sheet_radii);
+  gs::prune_skeleton(skeleton,
+                     gs::parameters::combine(gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(distances)),
+                                             gs::parameters::sheet_radius_map(gs::sheet_radius_in_voxels_map(sheet_radii)),
+                                             gs::parameters::piece_radius_map(gs::sheet_radius_in_voxels_map(widest_sheet))));
+  // The finer grid: its solid keeps the pruned skeleton's links, and each branch is routed
+  // through the middle of it.
+  gs::Dense_voxel_grid fine_solid;
+  gs::voxelize(mesh, fine_solid, gs::parameters::combine(gs::parameters::resolution(resolution),
+                                                         gs::parameters::voxelized_surface_output(&surface)));
+  gs::add_skeleton_to_solid(skeleton, fine_solid);
+  const gs::Voxel_distance_field fine_distances = gs::distance_transform(fine_solid);
+  gs::Sparse_voxel_set fine_skeleton;
+  fine_skeleton.reset(fine_solid.frame(), fine_solid.bounding_box());
+  gs::Coarser_voxel_map coarser_voxel;
+  gs::route_skeleton_on_finer_grid(skeleton, distances, fine_distances, fine_skeleton, coarser_voxel);
   Curve curve;
-  gs::to_graph(skeleton, distances, mesh, curve, with_surface);
+  gs::to_graph(fine_skeleton, fine_distances, mesh, curve, with_surface);
   gs::smooth_skeleton(curve, gs::parameters::smoothing_window(gs::default_smoothing_window(resolution)));
   gs::move_skeleton_inside(mesh, curve, with_surface);
-  const double voxel_size = solid.frame().voxel_size();
-  const std::vector<double> sheet_widths = gs::sheet_half_widths(curve, sheet_radii, voxel_size);
-  std::vector<double> piece_widths = gs::sheet_half_widths(curve, widest_sheet, voxel_size);
-  if(coarse) // a piece is at least as wide as the coarser grid measures it
+  // The sheet widths measured on the grid of the level of detail, read through the voxels
+  // that the routed skeleton stands for.
+  gs::Sheet_radii fine_sheet_radii, fine_widest_sheet;
+  for(const auto& [fine, coarse] : coarser_voxel)
   {
-    const std::vector<double> coarse_widths = gs::coarse_piece_half_widths(curve, *coarse);
-    for(std::size_t v = 0; v < piece_widths.size(); ++v)
-      piece_widths[v] = (std::max)(piece_widths[v], coarse_widths[v]);
+    if(sheet_radii.count(coarse) != 0)
+      fine_sheet_radii[fine] = sheet_radii.at(coarse);
+    if(widest_sheet.count(coarse) != 0)
+      fine_widest_sheet[fine] = widest_sheet.at(coarse);
   }
+  const double coarse_voxel_size = solid.frame().voxel_size(), voxel_size = fine_solid.frame().voxel_size();
+  const std::vector<double> sheet_widths = gs::sheet_half_widths(curve, fine_sheet_radii, coarse_voxel_size);
+  const std::vector<double> piece_widths = gs::sheet_half_widths(curve, fine_widest_sheet, coarse_voxel_size);
   // Parts thinner than half a voxel of the default grid get the joints of parts that thick.
   // Chains end short of the tips, and long bones get joints a tenth of the shape apart.
   Control composed;
@@ -1033,7 +912,6 @@ BOOST_AUTO_TEST_CASE(the_stages_composed_by_hand_on_a_finer_grid_give_the_same_s
   BOOST_TEST(r.smallest_radius == voxel_size); // half a voxel of a grid half as fine
   BOOST_TEST(r.tip_joint_setback == 0.3);
   BOOST_TEST(r.joint_spacing == gs::default_joint_spacing(voxel_size, resolution));
-  BOOST_TEST(r.pruning.swapped_for_coarse_end_branches + r.pruning.cut_back_branches > 0u);
   check_same_curve_and_rig(curve, expected_curve, composed, expected);
 }
 

@@ -187,6 +187,33 @@ BOOST_AUTO_TEST_CASE(a_character_gets_one_connected_skeleton)
   BOOST_TEST(mapped == std::size_t(num_vertices(mesh)));
 }
 
+// The resolution is a sampling choice, not a modelling one: from 48 to 128, the character
+// has a chain to each hand and foot, the same end points, and about as many joints as at
+// the default resolution (within a quarter).
+BOOST_AUTO_TEST_CASE(a_character_keeps_its_limbs_and_joints_from_resolution_48_to_128)
+{
+  std::vector<Piece> pieces;
+  const Mesh mesh = biped(pieces);
+  Control at_64;
+  const gs::Control_skeleton_report r_64 = gs::extract_control_skeleton(mesh, at_64);
+  for(int resolution : {48, 80, 96, 128})
+  {
+    BOOST_TEST_CONTEXT("resolution " << resolution)
+    {
+      Control control;
+      Curve curve;
+      const gs::Control_skeleton_report r = gs::extract_control_skeleton(
+          mesh, control, params::combine(params::resolution(resolution), params::curve_skeleton_output(&curve)));
+      BOOST_TEST(r.pruned.end_points == r_64.pruned.end_points);
+      BOOST_TEST(r.pruned.components == 1u);
+      for(const Vec& tip : {Vec{0.9, 0, 1.25}, Vec{-0.9, 0, 1.25}, Vec{0.22, 0, 0.08}, Vec{-0.22, 0, 0.08}})
+        BOOST_TEST(an_end_reaches(curve, tip, 0.1 + 2 * r_64.voxel_size));
+      const double joints = double(num_vertices(control)), joints_at_64 = double(num_vertices(at_64));
+      BOOST_TEST(std::abs(joints - joints_at_64) <= 0.25 * joints_at_64);
+    }
+  }
+}
+
 BOOST_AUTO_TEST_CASE(small_pieces_can_be_kept_as_their_own_trees)
 {
   std::vector<Piece> pieces;

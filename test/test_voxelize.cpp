@@ -1,7 +1,12 @@
 // Specification of CGAL/Geodesic_skeleton/voxelize.h.
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
-#include <CGAL/Geodesic_skeleton/join_pieces_joined_on_coarser_grid.h>
+#include <CGAL/Geodesic_skeleton/Skeleton_radius_in_voxels_map.h>
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
+#include <CGAL/Geodesic_skeleton/distance_transform.h>
+#include <CGAL/Geodesic_skeleton/prune_skeleton.h>
+#include <CGAL/Geodesic_skeleton/route_skeleton_on_finer_grid.h>
+#include <CGAL/Geodesic_skeleton/skeleton_statistics.h>
+#include <CGAL/Geodesic_skeleton/thin.h>
 #include <CGAL/Geodesic_skeleton/voxelize.h>
 #include <CGAL/Geodesic_skeleton/internal/voxelize/polygon_triangles.h>
 
@@ -315,67 +320,24 @@ BOOST_AUTO_TEST_CASE(a_gap_of_a_fraction_of_a_voxel_between_components_is_closed
   BOOST_TEST(double(s.size()) * h * h * h > 4. * 0.95);
 }
 
-// A voxel set of `keys` on a grid of voxels of `size`, axis-aligned, from the origin.
-template <typename VoxelSet>
-VoxelSet voxel_set(double size, const std::vector<gs::Voxel_key>& keys)
+// The straight voxel path between the voxels of a grid that hold two points: a skeleton
+// by hand, on that grid.
+gs::Sparse_voxel_set skeleton_between(const gs::Dense_voxel_grid& solid, const gs::Voxel_frame::Vector& a,
+                                      const gs::Voxel_frame::Vector& b)
 {
-  gs::Voxel_box box;
-  for(const gs::Voxel_key& k : keys)
-    box.extend(k);
-  VoxelSet set;
-  set.reset(gs::Voxel_frame(gs::Voxel_frame::Vector{0, 0, 0},
-                            {gs::Voxel_frame::Vector{1, 0, 0}, gs::Voxel_frame::Vector{0, 1, 0},
-                             gs::Voxel_frame::Vector{0, 0, 1}},
-                            size),
-            box);
-  for(const gs::Voxel_key& k : keys)
-    set.insert(k);
-  return set;
+  gs::Sparse_voxel_set skeleton;
+  skeleton.reset(solid.frame(), solid.bounding_box());
+  for(const gs::Voxel_key& k :
+      gs::internal::straight_voxel_path(solid.frame().voxel_of(a), solid.frame().voxel_of(b)))
+    skeleton.insert(k);
+  return skeleton;
 }
 
-BOOST_AUTO_TEST_CASE_TEMPLATE(the_pieces_in_one_coarser_piece_are_linked_by_their_nearest_voxels, VoxelSet,
-                              Voxel_set_models)
-{
-  // Fine voxels of 1, coarse voxels of 4: fine voxels 0 to 3 along an axis are coarse voxel 0.
-  const VoxelSet coarse = voxel_set<VoxelSet>(4, {{0, 0, 0}, {1, 0, 0}, {3, 0, 0}});
-  // Two pieces in coarse piece {0, 1}, nearest at (3, 0, 0) and (5, 1, 0); one in coarse
-  // voxel 3, a piece of its own: it stays apart.
-  VoxelSet fine = voxel_set<VoxelSet>(1, {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {5, 1, 0}, {6, 1, 0}, {13, 0, 0}});
-  BOOST_TEST(gs::join_pieces_joined_on_coarser_grid(fine, coarse) == 1u);
-  BOOST_TEST(test::components_26(fine) == 2);
-  BOOST_TEST(fine.size() == 8u); // one voxel links (3, 0, 0) and (5, 1, 0)
-  BOOST_TEST(fine.contains(gs::Voxel_key{4, 0, 0}) + fine.contains(gs::Voxel_key{4, 1, 0}) == 1);
-  BOOST_TEST(gs::join_pieces_joined_on_coarser_grid(fine, coarse) == 0u); // nothing left to join
-
-  // Voxels that touch at a corner are one piece already (26-connectivity).
-  VoxelSet corners = voxel_set<VoxelSet>(1, {{0, 0, 0}, {1, 1, 1}, {2, 2, 0}});
-  BOOST_TEST(gs::join_pieces_joined_on_coarser_grid(corners, coarse) == 0u);
-  BOOST_TEST(corners.size() == 3u);
-
-  // A coarser grid with no voxel joins nothing.
-  VoxelSet two = voxel_set<VoxelSet>(1, {{0, 0, 0}, {2, 0, 0}});
-  BOOST_TEST(gs::join_pieces_joined_on_coarser_grid(two, voxel_set<VoxelSet>(4, {})) == 0u);
-  BOOST_TEST(two.size() == 2u);
-
-  // Three pieces in one coarse piece get two links, the shortest that join them all.
-  VoxelSet three = voxel_set<VoxelSet>(1, {{0, 0, 0}, {2, 0, 0}, {4, 0, 0}});
-  BOOST_TEST(gs::join_pieces_joined_on_coarser_grid(three, coarse) == 2u);
-  BOOST_TEST(test::components_26(three) == 1);
-  BOOST_TEST(three.size() == 5u);
-
-  // The solids passed the wrong way round: a clear error, and the solid is left as it was.
-  VoxelSet finer = voxel_set<VoxelSet>(1, {{0, 0, 0}, {2, 0, 0}});
-  VoxelSet coarser = voxel_set<VoxelSet>(4, {{0, 0, 0}});
-  BOOST_CHECK_THROW(gs::join_pieces_joined_on_coarser_grid(coarser, finer), std::invalid_argument);
-  BOOST_TEST(coarser.size() == 1u);
-  BOOST_TEST(gs::join_pieces_joined_on_coarser_grid(finer, coarser) == 1u);
-}
-
-BOOST_AUTO_TEST_CASE(two_boxes_a_coarser_grid_joins_are_joined_on_a_finer_one)
+BOOST_AUTO_TEST_CASE(two_boxes_a_coarser_skeleton_links_are_linked_on_a_finer_grid)
 {
   // Two unit cubes side by side along x, 0.6 voxel apart at resolution 32: their surfaces
   // touch neighbouring voxels there, and the solid is one piece. At 128 the gap is 2.4
-  // voxels, and the solid two pieces, until they are joined as at 32.
+  // voxels, and the solid two pieces, until the coarser skeleton's link is added.
   const double gap = 0.6 * 2. / (32. - 0.6);
   test::Soup soup = test::box(0, 0, 0, 1, 1, 1);
   test::append(soup, test::box(0, 0, 0, 1, 1, 1), 1 + gap, 0, 0);
@@ -385,28 +347,77 @@ BOOST_AUTO_TEST_CASE(two_boxes_a_coarser_grid_joins_are_joined_on_a_finer_one)
   gs::voxelize(boxes, fine, gs::parameters::resolution(128));
   BOOST_REQUIRE(test::components_26(coarse) == 1);
   BOOST_REQUIRE(test::components_26(fine) == 2);
+  const gs::Sparse_voxel_set link = skeleton_between(coarse, {0.5, 0.5, 0.5}, {1.5 + gap, 0.5, 0.5});
+  BOOST_REQUIRE(test::components_26(link) == 1);
   const std::size_t before = fine.size();
-  BOOST_TEST(gs::join_pieces_joined_on_coarser_grid(fine, coarse) == 1u);
+  const std::size_t added = gs::add_skeleton_to_solid(link, fine);
+  BOOST_TEST(added == fine.size() - before);
   BOOST_TEST(test::components_26(fine) == 1);
-  BOOST_TEST(fine.size() - before <= 4u); // a link across the gap, a few voxels
+  BOOST_TEST(added <= 8u); // a link across the gap, a few voxels
+  BOOST_TEST(gs::add_skeleton_to_solid(link, fine) == 0u); // nothing left to add
 
-  // Three voxels of 32 apart, the grids agree: nothing is joined.
-  test::Soup apart = test::box(0, 0, 0, 1, 1, 1);
-  test::append(apart, test::box(0, 0, 0, 1, 1, 1), 1 + 3 * 2. / (32. - 3), 0, 0);
-  gs::voxelize(mesh_of(apart), coarse, gs::parameters::resolution(32));
-  gs::voxelize(mesh_of(apart), fine, gs::parameters::resolution(128));
-  BOOST_TEST(gs::join_pieces_joined_on_coarser_grid(fine, coarse) == 0u);
+  // A skeleton of two pieces, one in each cube: the finer solid stays two pieces.
+  gs::voxelize(boxes, fine, gs::parameters::resolution(128));
+  gs::Sparse_voxel_set apart = skeleton_between(coarse, {0.5, 0.5, 0.5}, {0.5, 0.5, 0.5});
+  apart.insert(coarse.frame().voxel_of({1.5 + gap, 0.5, 0.5}));
+  gs::add_skeleton_to_solid(apart, fine);
   BOOST_TEST(test::components_26(fine) == 2);
+}
 
-  // blobby_3cc.off's three open pieces: at 64, two of them come within a voxel; at 128 they
-  // are joined as at 64.
-  const Mesh blobby = test::demo_mesh<Mesh>("blobby_3cc.off");
-  gs::voxelize(blobby, coarse, gs::parameters::resolution(64));
-  gs::voxelize(blobby, fine, gs::parameters::resolution(128));
-  BOOST_REQUIRE(test::components_26(coarse) == 2);
-  BOOST_REQUIRE(test::components_26(fine) == 3);
-  BOOST_TEST(gs::join_pieces_joined_on_coarser_grid(fine, coarse) == 1u);
-  BOOST_TEST(test::components_26(fine) == 2);
+// A T of two bars, its skeleton pruned at 32 and routed at 96: the same three ends and one
+// junction, one piece, every voxel inside the finer solid and standing for a voxel of the
+// coarser skeleton; a branch across a gap that the finer solid has follows the coarser
+// skeleton's voxels.
+BOOST_AUTO_TEST_CASE(a_skeleton_routed_on_a_finer_grid_keeps_its_branches)
+{
+  test::Soup soup = test::box(0, 0, 0, 4, 0.6, 0.6);          // the bar of the T
+  test::append(soup, test::box(1.7, -3, 0, 2.3, 0.3, 0.6));  // its stem
+  const Mesh t = mesh_of(soup);
+  gs::Dense_voxel_grid coarse;
+  gs::voxelize(t, coarse, gs::parameters::resolution(32));
+  const gs::Voxel_distance_field coarse_distances = gs::distance_transform(coarse);
+  gs::thin(coarse, coarse_distances);
+  gs::Sparse_voxel_set skeleton;
+  skeleton.reset(coarse.frame(), coarse.bounding_box());
+  coarse.for_each([&](const gs::Voxel_key& k) { skeleton.insert(k); });
+  gs::prune_skeleton(skeleton, gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(coarse_distances)));
+  const gs::Skeleton_statistics before = gs::internal::skeleton_statistics_of_voxels(skeleton);
+  BOOST_REQUIRE(before.end_points == 3u);
+
+  gs::Dense_voxel_grid fine;
+  gs::voxelize(t, fine, gs::parameters::resolution(96));
+  gs::add_skeleton_to_solid(skeleton, fine);
+  const gs::Voxel_distance_field fine_distances = gs::distance_transform(fine);
+  gs::Sparse_voxel_set routed;
+  routed.reset(fine.frame(), fine.bounding_box());
+  gs::Coarser_voxel_map coarser_voxel;
+  BOOST_TEST(gs::route_skeleton_on_finer_grid(skeleton, coarse_distances, fine_distances, routed, coarser_voxel) == 0u);
+  const gs::Skeleton_statistics after = gs::internal::skeleton_statistics_of_voxels(routed);
+  BOOST_TEST(after.end_points == before.end_points);
+  BOOST_TEST(after.cycles == 0u);
+  BOOST_TEST(after.components == 1u);
+  BOOST_TEST(routed.size() > 2 * skeleton.size()); // three times as many voxels along each bar
+  routed.for_each([&](const gs::Voxel_key& k) {
+    BOOST_TEST(fine_distances.inside(k));
+    BOOST_TEST((coarser_voxel.count(k) == 1 && skeleton.contains(coarser_voxel.at(k))));
+  });
+
+  // Two cubes that the grid of 32 joins and the grid of 128 separates, and a skeleton
+  // across the gap: without its link in the finer solid, the branch follows the coarser
+  // voxels, and the routed skeleton is one piece still.
+  const double gap = 0.6 * 2. / (32. - 0.6);
+  test::Soup cubes = test::box(0, 0, 0, 1, 1, 1);
+  test::append(cubes, test::box(0, 0, 0, 1, 1, 1), 1 + gap, 0, 0);
+  gs::Dense_voxel_grid joined, apart;
+  gs::voxelize(mesh_of(cubes), joined, gs::parameters::resolution(32));
+  gs::voxelize(mesh_of(cubes), apart, gs::parameters::resolution(128));
+  const gs::Sparse_voxel_set link = skeleton_between(joined, {0.5, 0.5, 0.5}, {1.5 + gap, 0.5, 0.5});
+  gs::Sparse_voxel_set across;
+  across.reset(apart.frame(), apart.bounding_box());
+  gs::Coarser_voxel_map across_coarser;
+  BOOST_TEST(gs::route_skeleton_on_finer_grid(link, gs::distance_transform(joined), gs::distance_transform(apart),
+                                              across, across_coarser) == 1u);
+  BOOST_TEST(gs::internal::skeleton_statistics_of_voxels(across).components == 1u);
 }
 
 BOOST_AUTO_TEST_CASE(bad_input_is_a_clear_error)

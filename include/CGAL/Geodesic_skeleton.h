@@ -29,7 +29,6 @@
 #include <CGAL/Geodesic_skeleton/Voxelized_surface.h>
 #include <CGAL/Geodesic_skeleton/No_enclosed_volume.h>
 #include <CGAL/Geodesic_skeleton/voxelize.h>
-#include <CGAL/Geodesic_skeleton/join_pieces_joined_on_coarser_grid.h>
 #include <CGAL/Geodesic_skeleton/remove_small_pieces.h>
 #include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
 #include <CGAL/Geodesic_skeleton/Skeleton_radius_in_voxels_map.h>
@@ -40,9 +39,7 @@
 // Pruning (Algorithm 1) and the curve skeleton.
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
 #include <CGAL/Geodesic_skeleton/prune_skeleton.h>
-#include <CGAL/Geodesic_skeleton/coarse_skeleton_end_points.h>
-#include <CGAL/Geodesic_skeleton/graft_coarse_end_branches.h>
-#include <CGAL/Geodesic_skeleton/route_lone_paths_through_the_middle.h>
+#include <CGAL/Geodesic_skeleton/route_skeleton_on_finer_grid.h>
 #include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
 #include <CGAL/Geodesic_skeleton/to_graph.h>
 #include <CGAL/Geodesic_skeleton/skeleton_statistics.h>

@@ -76,15 +76,8 @@ inline constexpr Parameter_range spur_length_factor{"spur_length_factor", 0, 100
 /// less than this many times the largest MAT radius of their piece are snipped (the rig's
 /// level of detail; 0 keeps them).
 inline constexpr Parameter_range limb_protrusion_factor{"limb_protrusion_factor", 0, 100, 0.75, false, false};
-/// `prune_skeleton()`: how near the tip of an end branch, in voxels of the skeleton, an end
-/// point of the coarser skeleton must be for the coarser grid to have the branch.
-inline constexpr Parameter_range coarse_end_point_tolerance{"coarse_end_point_tolerance", 0, 1e6, 4, false, false};
-/// `route_lone_paths_through_the_middle()`: how many times as much as the straight segment
-/// between its ends a lone path must cost to be a detour, routed through the middle (0 turns
-/// this off).
-inline constexpr Parameter_range lone_path_detour_factor{"lone_path_detour_factor", 0, 1000, 2, false, false};
-/// `extract_control_skeleton()`: the resolution whose skeleton's end points decide which end
-/// branches a finer grid keeps (0, or at least the resolution, turns this off).
+/// `extract_control_skeleton()`: the resolution of the grid that decides which branches the
+/// rig has; a finer grid routes them (0, or at least the resolution, turns this off).
 inline constexpr Parameter_range level_of_detail_resolution{"level_of_detail_resolution", 0, 8192, 64, true, false};
 /// `smooth_skeleton()`: points averaged along the branches.
 inline constexpr Parameter_range smoothing_window{"smoothing_window", 1, 1001, 5, true, true};

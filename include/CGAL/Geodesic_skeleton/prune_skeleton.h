@@ -12,8 +12,6 @@
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
 #include <CGAL/Geodesic_skeleton/internal/prune/branched_regions.h>
-#include <CGAL/Geodesic_skeleton/internal/prune/coarse_end_branch_swaps.h>
-#include <CGAL/Geodesic_skeleton/internal/prune/coarse_end_points.h>
 #include <CGAL/Geodesic_skeleton/internal/prune/spurious_branches.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
@@ -39,14 +37,6 @@ struct Pruning_report
   std::size_t snipped_branches = 0;          ///< spurious end branches snipped
   std::size_t snipped_points = 0;            ///< voxels of those branches
   std::size_t rounds = 0;                    ///< rounds of pruning and snipping that changed something
-  /// end branches snipped because a coarser skeleton does not have them (`coarse_end_points`)
-  std::size_t snipped_beyond_coarse_detail = 0;
-  /// end branches that a coarser skeleton does not have, each swapped for a branch snipped
-  /// at the same junction that it ends in (`coarse_end_points`)
-  std::size_t swapped_for_coarse_end_branches = 0;
-  /// end branches cut back to a coarse end point that they ran on past (`coarse_end_points`)
-  std::size_t cut_back_branches = 0;
-  std::size_t cut_back_points = 0;           ///< voxels of those branches removed so
 };
 
 /// \ingroup PkgGeodesicSkeletonRef
@@ -70,28 +60,7 @@ struct Pruning_report
 /// end branches of the skeleton's graph as `to_graph()` makes it, which also has ends that
 /// voxel degrees hide (a voxel hanging on a lump, a tip that is a little triangle).
 ///
-/// Given `coarse_end_points`, the end points of the skeleton of the same shape on a coarser
-/// grid, pruning then goes on while the skeleton's graph has more end points than those:
-/// an end branch whose tip no coarse end point is paired with, detail that the finer grid
-/// resolves and the coarser one does not (the corners of a block, which a coarser grid
-/// merges into fewer branches; the teeth of a comb along a thin rim, which all end near the
-/// coarser skeleton's one end there), is judged with
-/// both thresholds 3 times larger (`unmatched_threshold_factor`), and each one snipped so
-/// counts against the surplus of end points; in each round the tips and the coarse end
-/// points within `coarse_end_point_tolerance` of each other are paired one to one, nearest
-/// pairs first. Then, while the skeleton has an end point that
-/// no coarse end point is near and the coarser skeleton one that no end point is near, a
-/// branch snipped earlier whose tip is near the latter is swapped back in for an end branch
-/// at the same junction whose tip no coarse end point is near (as many end points are not
-/// the same ones: of a junction's short branches, the finer grid may snip the one the
-/// coarser skeleton ends in). Last, each end branch is cut back to where the
-/// coarser skeleton ends (a finer grid carries a branch further, into a hoof's curl, the
-/// fingers of a hand, an open neck): to its voxel nearest the coarse end point nearest its
-/// tip, when one is within the tolerance of the tip, else nearest the first coarse end point
-/// that no end point matches and that the branch passes near (within the tolerance of a
-/// branch voxel, or inside its MAT ball: in a thick part the coarser grid may end its
-/// skeleton anywhere across the part's thickness); one branch at a time, the voxel next to
-/// its junction staying (a path without junction, from each end up to its middle). Both
+/// Both
 /// thresholds are ratios of lengths of the shape, so that the same features are kept at
 /// every resolution that resolves them. The radius that judges a voxel is its MAT radius,
 /// or its sheet radius where that is larger (in a thin sheet, the sheet's half width); the
@@ -102,8 +71,7 @@ struct Pruning_report
 /// Pruning never disconnects a component (every terminator stays linked to its
 /// region's centroid and a snipped branch hangs by one junction), never opens a cycle
 /// that passes through a region (the cycle's two terminators stay linked through the
-/// centroid) and never snips a path component (no junction); with `coarse_end_points`, a
-/// path can be cut back from each end, never past its middle voxel (before the cuts).
+/// centroid) and never snips a path component (no junction).
 ///
 /// \tparam VoxelSet a model of `VoxelSet`; read through `for_each()` and `contains()`
 ///         (no dense copy: the classes and the regions are kept in hash maps by key).
@@ -159,45 +127,18 @@ struct Pruning_report
 ///                    number as value type}
 ///     \cgalParamDefault{0 everywhere: the largest MAT or sheet radius of the piece}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{coarse_end_points}
-///     \cgalParamDescription{the end points of the pruned skeleton of the same shape on a
-///                           coarser grid (the vertices of degree 1 of its graph), in the grid
-///                           coordinates of `skeleton`'s voxels (voxel `k` covers
-///                           [k, k + 1) along each axis): the level of detail to keep
-///                           (package parameter; `extract_control_skeleton()` gives those at
-///                           its `level_of_detail_resolution`)}
-///     \cgalParamType{`const std::vector<std::array<double, 3>>*`}
-///     \cgalParamDefault{`nullptr`: no coarser skeleton}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{coarse_end_point_tolerance}
-///     \cgalParamDescription{how near the tip of an end branch, in voxels of `skeleton`, a
-///                           coarse end point must be for the coarser grid to have the branch
-///                           (the nearest such tip that no other coarse end point is paired with),
-///                           and how near a voxel of the branch for the branch to be cut back
-///                           to it (or inside the voxel's MAT ball, whichever is larger), in
-///                           [0, 1e6] (package parameter)}
-///     \cgalParamType{`double`}
-///     \cgalParamDefault{4}
-///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \returns what was removed, and how many rounds of snipping were made.
-/// \throws std::invalid_argument when `spur_length_factor`, `limb_protrusion_factor` or
-///         `coarse_end_point_tolerance` is out of range, a coarse end point is not finite, or
-///         a radius, sheet radius or piece radius is negative or not finite.
+/// \throws std::invalid_argument when `spur_length_factor` or `limb_protrusion_factor` is
+///         out of range, or a radius, sheet radius or piece radius is negative or not finite.
 ///
 /// \b Complexity: O(N log N + V M) for N skeleton voxels per round of snipping (one Dijkstra
 /// per region, over the region; each end branch traced once), where the protrusions of the
 /// end branches read V voxels (from the tip inwards, until the branch is known to stay) and
 /// each compares M balls, those whose centre is within the largest MAT radius of it along
 /// the third axis (O(N) at worst; a small part of the skeleton in practice); a few rounds
-/// in practice; O(N) extra memory. With `coarse_end_points` (C of them), the rounds run once
-/// more and the tip of each end branch is compared with each coarse end point, the pairs
-/// within the tolerance sorted and taken one to one: O(E C log(E C)) more per round
-/// for E end branches; cutting back traces the graph again after each of the K
-/// branches it cuts (K <= C) and compares the voxels of the end branches with the coarse end
-/// points: O(K N (log N + C)) more; the swaps trace the graph again for each of the S branches
-/// snipped that they try: O(S N log N) more, and O(N) memory for the branches snipped.
+/// in practice; O(N) extra memory.
 template <typename VoxelSet, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Pruning_report prune_skeleton(VoxelSet& skeleton,
                               const NamedParameters& np = CGAL::parameters::default_values())
@@ -215,16 +156,6 @@ Pruning_report prune_skeleton(VoxelSet& skeleton,
       choose_parameter(get_parameter(np, internal_np::limb_protrusion_factor_tag),
                        parameter_ranges::limb_protrusion_factor.default_value),
       "prune_skeleton");
-  const double tolerance = internal::checked_parameter(
-      parameter_ranges::coarse_end_point_tolerance,
-      choose_parameter(get_parameter(np, internal_np::coarse_end_point_tolerance_tag),
-                       parameter_ranges::coarse_end_point_tolerance.default_value),
-      "prune_skeleton");
-  const std::vector<std::array<double, 3>>* coarse_points =
-      choose_parameter(get_parameter(np, internal_np::coarse_end_points_tag),
-                       static_cast<const std::vector<std::array<double, 3>>*>(nullptr));
-  if(coarse_points != nullptr)
-    internal::check_coarse_end_points_are_finite(*coarse_points, "prune_skeleton");
   const auto mat_radius_map = choose_parameter(get_parameter(np, internal_np::mat_radius_map_tag),
                                                CGAL::Constant_property_map<Voxel_key, double>(1.0));
   const auto sheet_radius_map = choose_parameter(get_parameter(np, internal_np::sheet_radius_map_tag),
@@ -259,58 +190,25 @@ Pruning_report prune_skeleton(VoxelSet& skeleton,
   internal::Spur_thresholds thresholds{factor, protrusion_factor, {}};
   if(protrusion_factor > 0)
     thresholds.largest_radius_of_piece = internal::largest_radius_of_pieces(skeleton, piece_radius);
-  // With a coarser skeleton, the branches snipped are kept for swapping back in.
-  std::vector<internal::End_branch> snipped_for_swaps;
-  if(coarse_points != nullptr)
-    thresholds.snipped_branches = &snipped_for_swaps;
   Pruning_report report;
-  auto prune_until_nothing_changes = [&](bool first_pass) {
-    for(bool first = first_pass;; first = false)
-    {
-      const internal::Branched_region_pruning pruned = internal::prune_branched_regions(skeleton, radius);
-      if(first)
-        report.branched_regions = pruned.regions;
-      report.removed_branched_points += pruned.removed_points;
-      internal::Snipping snipped;
-      if(factor > 0 || protrusion_factor > 0)
-      {
-        snipped = internal::snip_spurious_branches_once(skeleton, radii, thresholds);
-        if(snipped.branches == 0) // what is left that the graph, not the voxels, shows as ends
-          snipped = internal::snip_spurious_graph_branches_once(skeleton, radii, thresholds);
-      }
-      report.snipped_branches += snipped.branches;
-      report.snipped_points += snipped.points;
-      if(pruned.removed_points == 0 && snipped.branches == 0)
-        break;
-      ++report.rounds;
-    }
-  };
-  prune_until_nothing_changes(true);
-
-  // Then, given the end points of a coarser skeleton of the same shape, the end branches
-  // that it does not have are judged with larger thresholds, until the skeleton has no
-  // more end points than it.
-  if(coarse_points != nullptr && (factor > 0 || protrusion_factor > 0))
+  for(bool first = true;; first = false)
   {
-    internal::Coarse_end_point_guide guide{*coarse_points, tolerance, internal::unmatched_threshold_factor, 0};
-    const std::size_t ends = internal::graph_end_points(skeleton).size();
-    guide.budget = ends > coarse_points->size() ? ends - coarse_points->size() : 0;
-    if(guide.budget > 0)
+    const internal::Branched_region_pruning pruned = internal::prune_branched_regions(skeleton, radius);
+    if(first)
+      report.branched_regions = pruned.regions;
+    report.removed_branched_points += pruned.removed_points;
+    internal::Snipping snipped;
+    if(factor > 0 || protrusion_factor > 0)
     {
-      const std::size_t budget = guide.budget;
-      thresholds.coarse = &guide;
-      prune_until_nothing_changes(false);
-      report.snipped_beyond_coarse_detail = budget - guide.budget;
+      snipped = internal::snip_spurious_branches_once(skeleton, radii, thresholds);
+      if(snipped.branches == 0) // what is left that the graph, not the voxels, shows as ends
+        snipped = internal::snip_spurious_graph_branches_once(skeleton, radii, thresholds);
     }
-    // Then a branch snipped that the coarser skeleton ends in is swapped back in for one at
-    // the same junction that it does not have.
-    report.swapped_for_coarse_end_branches =
-        internal::swap_in_coarse_end_branches(skeleton, *coarse_points, tolerance, snipped_for_swaps);
-    // Last, each end branch is cut back to where the coarser skeleton ends.
-    const internal::Cut_back cut =
-        internal::cut_back_to_coarse_end_points(skeleton, *coarse_points, tolerance, mat_radius);
-    report.cut_back_branches = cut.branches;
-    report.cut_back_points = cut.points;
+    report.snipped_branches += snipped.branches;
+    report.snipped_points += snipped.points;
+    if(pruned.removed_points == 0 && snipped.branches == 0)
+      break;
+    ++report.rounds;
   }
   return report;
 }

@@ -132,8 +132,7 @@ Small_pieces_report remove_small_pieces_with(VoxelSet& skeleton, const VoxelDist
 /// `small_piece_fraction` times the voxels of the largest piece's solid. A character as
 /// artists make it has parts that float free of the body (eyes, teeth, a buckle, strands of
 /// hair); each would otherwise get its own little skeleton tree. Pieces that overlap or
-/// touch the body (within a voxel; above the level of detail's resolution, within a voxel of
-/// its grid: `join_pieces_joined_on_coarser_grid()`) are part of its solid already and stay. In
+/// touch the body (within a voxel) are part of its solid already and stay. In
 /// `extract_control_skeleton()` (between `thin()` and `cut_spurious_cycles()`), the mesh
 /// vertices of a removed piece then map to the nearest point of the body's skeleton, so that
 /// the piece follows the body it belongs to.

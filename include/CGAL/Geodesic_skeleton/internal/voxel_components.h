@@ -6,9 +6,8 @@
 
 // The 26-connected components of a list of voxels, for the curve skeletons (the pieces
 // that remove_small_pieces() and prune_skeleton() measure, the branched regions of
-// prune_skeleton()). A solid, with far more voxels, is searched along its runs
-// (runs_and_pieces() in join_pieces.h) or over its box (solid_piece_sizes() in
-// remove_small_pieces.h).
+// prune_skeleton()). A solid, with far more voxels, is searched over its box
+// (solid_piece_sizes() in remove_small_pieces.h).
 
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 

@@ -9,7 +9,6 @@
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
 #include <CGAL/Geodesic_skeleton/internal/prune/branched_regions.h>
-#include <CGAL/Geodesic_skeleton/internal/prune/coarse_end_points.h>
 #include <CGAL/Geodesic_skeleton/internal/prune/covering_balls.h>
 
 #include <CGAL/Geodesic_skeleton/internal/to_graph/skeleton_adjacency.h>
@@ -34,7 +33,6 @@ struct End_branch
   Voxel_key junction;
   double length = 0;             // arc length from the end point to the junction (voxels)
   double spuriousness = 0;       // under 1 for a spur; the smaller, the earlier it is snipped
-  bool beyond_coarse_detail = false; // a spur only because a coarser skeleton does not have it
 };
 
 // Walks on from the last voxel of `branch` along points of degree 2 until a point of
@@ -173,15 +171,11 @@ bool trace_end_branch(const VoxelSet& skeleton, const Voxel_key& end, End_branch
 // `spur_length_factor` radii at its junction, or when its balls reach less than
 // `limb_protrusion_factor` times the largest radius of its skeleton piece out of its
 // junction's ball and out of the maximal balls of the rest of the skeleton. A factor 0
-// turns its test off. With a `coarse` guide, both thresholds are larger for an end branch
-// that the coarser skeleton does not have (Coarse_end_point_guide).
+// turns its test off.
 struct Spur_thresholds
 {
   double spur_length_factor = 0;
   double limb_protrusion_factor = 0;
-  Coarse_end_point_guide* coarse = nullptr;
-  // When set, receives every end branch snipped, in the order they go.
-  std::vector<End_branch>* snipped_branches = nullptr;
   // The largest radius of the piece of the skeleton each voxel is in.
   std::unordered_map<Voxel_key, double, Voxel_key_hash> largest_radius_of_piece;
 };
@@ -239,30 +233,24 @@ double protrusion_of(const End_branch& branch, const Radii& radii, const VoxelSe
   return protrusion;
 }
 
-// The factor of both thresholds for `branch`: larger when a coarser skeleton does not have it.
-inline double threshold_factor(const End_branch& branch, const Spur_thresholds& thresholds)
-{
-  return thresholds.coarse ? thresholds.coarse->threshold_factor(branch.voxels.front()) : 1.;
-}
-
 // How spurious `branch` is: the smaller of its length over the spur length and its
 // protrusion (protrusion_of()) over the smallest limb protrusion (each infinite when its
-// test is off), both thresholds times `factor`. The protrusion is measured only until it
+// test is off). The protrusion is measured only until it
 // reaches the smallest limb protrusion: past 1, its ratio says only that the branch is no
 // spur by that test.
 template <typename VoxelSet, typename Radii>
 double spuriousness_of(const End_branch& branch, const Radii& radii, const Spur_thresholds& thresholds,
-                       const VoxelSet& skeleton, const Covering_balls& balls, double factor)
+                       const VoxelSet& skeleton, const Covering_balls& balls)
 {
   double s = std::numeric_limits<double>::infinity();
   const double junction_radius = std::max(radii.judging(branch.junction), 1e-12);
   if(thresholds.spur_length_factor > 0)
-    s = branch.length / (factor * thresholds.spur_length_factor * junction_radius);
+    s = branch.length / (thresholds.spur_length_factor * junction_radius);
   if(thresholds.limb_protrusion_factor > 0)
   {
     const auto piece = thresholds.largest_radius_of_piece.find(branch.junction);
     const double largest = piece != thresholds.largest_radius_of_piece.end() ? piece->second : junction_radius;
-    const double smallest_limb = factor * thresholds.limb_protrusion_factor * std::max(largest, 1e-12);
+    const double smallest_limb = thresholds.limb_protrusion_factor * std::max(largest, 1e-12);
     s = std::min(s, protrusion_of(branch, radii, skeleton, balls, smallest_limb) / smallest_limb);
   }
   return s;
@@ -274,28 +262,18 @@ struct Snipping
 };
 
 // The branches among `branches` that `thresholds` calls spurs, with their spuriousness,
-// the most spurious first (ties by end voxel). The coarse guide, if any, first pairs the
-// coarse end points with the tips of `branches`.
+// the most spurious first (ties by end voxel).
 template <typename VoxelSet, typename Radii>
 std::vector<End_branch> spurs_among(std::vector<End_branch> branches, const Radii& radii,
                                     const Spur_thresholds& thresholds, const VoxelSet& skeleton,
                                     const Covering_balls& balls)
 {
-  if(thresholds.coarse)
-  {
-    std::vector<Voxel_key> tips;
-    for(const End_branch& branch : branches)
-      tips.push_back(branch.voxels.front());
-    thresholds.coarse->match_tips(tips);
-  }
   std::vector<End_branch> spurs;
   for(End_branch& branch : branches)
   {
-    const double factor = threshold_factor(branch, thresholds);
-    branch.spuriousness = spuriousness_of(branch, radii, thresholds, skeleton, balls, factor);
+    branch.spuriousness = spuriousness_of(branch, radii, thresholds, skeleton, balls);
     if(!(branch.spuriousness < 1))
       continue;
-    branch.beyond_coarse_detail = factor > 1 && !(spuriousness_of(branch, radii, thresholds, skeleton, balls, 1.) < 1);
     spurs.push_back(std::move(branch));
   }
   std::sort(spurs.begin(), spurs.end(), [](const End_branch& a, const End_branch& b) {
@@ -305,10 +283,9 @@ std::vector<End_branch> spurs_among(std::vector<End_branch> branches, const Radi
 }
 
 // Snips the `spurs` in their order, each one that `may_snip(spur)`, asked after the snips
-// before it, allows, and tells the `thresholds`' coarse guide and record of snipped
-// branches, if any.
+// before it, allows.
 template <typename VoxelSet, typename MaySnip>
-Snipping snip_in_order(VoxelSet& skeleton, const std::vector<End_branch>& spurs, const Spur_thresholds& thresholds,
+Snipping snip_in_order(VoxelSet& skeleton, const std::vector<End_branch>& spurs,
                        MaySnip may_snip)
 {
   Snipping result;
@@ -316,10 +293,6 @@ Snipping snip_in_order(VoxelSet& skeleton, const std::vector<End_branch>& spurs,
   {
     if(!may_snip(spur))
       continue;
-    if(thresholds.coarse && spur.beyond_coarse_detail)
-      thresholds.coarse->snipped();
-    if(thresholds.snipped_branches)
-      thresholds.snipped_branches->push_back(spur);
     for(const Voxel_key& k : spur.voxels)
       skeleton.erase(k);
     ++result.branches;
@@ -349,13 +322,13 @@ Snipping snip_spurious_branches_once(VoxelSet& skeleton, const Radii& radii, con
       branches.push_back(std::move(branch));
   }
   const Covering_balls balls(skeleton, radii.ball);
-  return snip_in_order(skeleton, spurs_among(std::move(branches), radii, thresholds, skeleton, balls), thresholds,
+  return snip_in_order(skeleton, spurs_among(std::move(branches), radii, thresholds, skeleton, balls),
                        [&](const End_branch& spur) {
     // Earlier snips of this round may have changed this branch's junction, or removed the
     // balls that held it.
     return skeleton.contains(spur.voxels.front()) && skeleton.contains(spur.junction) &&
            branches_at_junction(skeleton, spur.junction) >= 3 &&
-           spuriousness_of(spur, radii, thresholds, skeleton, balls, threshold_factor(spur, thresholds)) < 1;
+           spuriousness_of(spur, radii, thresholds, skeleton, balls) < 1;
   });
 }
 
@@ -411,10 +384,10 @@ Snipping snip_spurious_graph_branches_once(VoxelSet& skeleton, const Radii& radi
   Graph_end_branches graph = graph_end_branches(skeleton);
   const Covering_balls balls(skeleton, radii.ball);
   return snip_in_order(skeleton, spurs_among(std::move(graph.branches), radii, thresholds, skeleton, balls),
-                       thresholds, [&](const End_branch& spur) {
+                       [&](const End_branch& spur) {
     std::size_t& branches = graph.junction_degree[spur.junction];
     if(branches < 3 ||
-       !(spuriousness_of(spur, radii, thresholds, skeleton, balls, threshold_factor(spur, thresholds)) < 1))
+       !(spuriousness_of(spur, radii, thresholds, skeleton, balls) < 1))
       return false;
     --branches;
     return true;

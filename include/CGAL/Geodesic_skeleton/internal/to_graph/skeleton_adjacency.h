@@ -63,6 +63,11 @@ inline std::vector<std::vector<int>> neighbours_of_nodes(const Skeleton_adjacenc
   return around;
 }
 
+// The voxels of `skeleton` that are end points of its graph (26-adjacency without junction
+// triangles): the end points the control skeleton gets.
+template <typename VoxelSet>
+std::vector<Voxel_key> graph_end_points(const VoxelSet& skeleton);
+
 // The walk from an end node (degree 1) of a graph along its nodes of degree 2: the nodes
 // passed, the end node first, and the node where the walk stops, of degree 3 or more (the
 // end branch's junction) or 1 (the other end of a path).
@@ -144,6 +149,18 @@ Skeleton_adjacency skeleton_adjacency(const VoxelSet& skeleton)
     const auto at = node_at.find(k);
     return at != node_at.end() ? at->second : std::int32_t(-1);
   });
+}
+
+template <typename VoxelSet>
+std::vector<Voxel_key> graph_end_points(const VoxelSet& skeleton)
+{
+  const Skeleton_adjacency graph = skeleton_adjacency(skeleton);
+  const std::vector<std::vector<int>> around = neighbours_of_nodes(graph);
+  std::vector<Voxel_key> ends;
+  for(std::size_t v = 0; v < graph.nodes.size(); ++v)
+    if(around[v].size() == 1)
+      ends.push_back(graph.nodes[v]);
+  return ends;
 }
 
 } // namespace internal
