@@ -75,10 +75,23 @@ inline double step_cost_through_the_middle(const Voxel_distance_field& distances
   return step_length(from, next) / mat_radius_in_voxels(distances.squared_distance(next));
 }
 
+// Grid coordinates are moved between grids up this far before they are rounded down: a
+// voxel centre of one grid that lies on a cell boundary of the other (two grids whose sizes
+// are in a ratio of 2) then falls in the same cell however the world coordinates round, so
+// that the result does not change when the mesh is rotated or moved.
+constexpr double cell_boundary_bias = 1e-6;
+
+// The voxel whose cell holds the grid point `g`, a point on a cell boundary in the cell above.
+inline Voxel_key cell_of(const Vec3& g)
+{
+  return Voxel_key{int(std::floor(g[0] + cell_boundary_bias)), int(std::floor(g[1] + cell_boundary_bias)),
+                   int(std::floor(g[2] + cell_boundary_bias))};
+}
+
 // The voxel of `to` whose cell holds the centre of voxel `k` of `from`.
 inline Voxel_key voxel_in_frame(const Voxel_frame& from, const Voxel_frame& to, const Voxel_key& k)
 {
-  return to.voxel_of(from.centre(k));
+  return cell_of(to.to_grid(from.centre(k)));
 }
 
 // The branches of a skeleton's graph (the one to_graph() makes) as voxel paths between its
@@ -281,6 +294,7 @@ private:
     bool reached;                // by the search
     bool closed;                 // taken by the search
     bool near_skeleton;          // a skeleton voxel or a neighbour of one
+    bool avoided;                // next to a leg of the branch that is not on the skeleton yet
   };
 
   // Confines the search of the next branch to a window of the finer grid around the tube of
@@ -350,10 +364,10 @@ private:
 
   Voxel_key coarse_voxel_of(const Voxel_key& k) const
   {
-    int coarse[3];
+    Vec3 g;
     for(std::size_t c = 0; c < 3; ++c)
-      coarse[c] = int(std::floor(m_origin[c] + k.x * m_step[0][c] + k.y * m_step[1][c] + k.z * m_step[2][c]));
-    return Voxel_key{coarse[0], coarse[1], coarse[2]};
+      g[c] = m_origin[c] + k.x * m_step[0][c] + k.y * m_step[1][c] + k.z * m_step[2][c];
+    return cell_of(g);
   }
 
   // The cheapest path from `start` to the first voxel that `is_goal` accepts through the
@@ -452,8 +466,7 @@ private:
   // `k` (or, failing that, at its centre) with the largest MAT radius.
   Voxel_key most_central_fine_voxel(const Voxel_key& k) const
   {
-    const auto c = m_coarse_frame.centre(k);
-    const Voxel_key centre = m_fine.frame().voxel_of(c);
+    const Voxel_key centre = voxel_in_frame(m_coarse_frame, m_fine.frame(), k);
     const int reach = (std::max)(1, int(std::ceil(m_coarse_frame.voxel_size() / m_fine.frame().voxel_size() / 2)));
     Voxel_key best = centre;
     for(int dz = -reach; dz <= reach; ++dz)
@@ -525,8 +538,11 @@ private:
 
   // Routes branch `e` from node `far` to the finer skeleton around node `near`: through the
   // middle of the finer solid, within the part of the coarser solid nearest to the branch
-  // and to the branches it meets at its nodes, and touching the skeleton only around its
-  // two nodes; or, when no such path is found, along the coarser branch's own voxels.
+  // and its two nodes, and touching the skeleton only around its two nodes; or, when no such
+  // path is found, along the coarser branch's own voxels. A branch of more than 4 voxels is
+  // routed in two legs, through the finer voxel of its middle, so that it cannot cut across
+  // from node to node where the two lie close (the arcs of a figure eight, whose two
+  // junctions are a few voxels apart).
   template <typename VoxelSet>
   bool route_branch(VoxelSet& skeleton, int e, int far, int near)
   {
@@ -537,45 +553,111 @@ private:
     if(branch.first_node != far)
       std::reverse(coarse_path.begin(), coarse_path.end());
     const Voxel_key start = m_fine_node[std::size_t(far)];
+    const double start_reach = m_node_radius[std::size_t(far)] + 2;
+    std::vector<Voxel_key> path;
+    if(coarse_path.size() > 4)
+    {
+      const std::size_t middle = coarse_path.size() / 2;
+      const Voxel_key through = most_central_fine_voxel(coarse_path[middle]);
+      const std::vector<Voxel_key> first_leg =
+          route_leg(skeleton, e, far, near, start, start_reach, [&](const Voxel_key& k) { return k == through; });
+      // The second leg keeps away from the first, which joins the skeleton with it.
+      if(!first_leg.empty())
+        path = route_leg(skeleton, e, far, near, through, 2, goal_around(skeleton, near), false, &first_leg);
+      if(!path.empty())
+      {
+        add_path(skeleton, first_leg, {coarse_path.begin(), coarse_path.begin() + std::ptrdiff_t(middle) + 1});
+        add_path(skeleton, path, {coarse_path.begin() + std::ptrdiff_t(middle), coarse_path.end()});
+      }
+    }
+    else if(!skeleton.contains(start))
+    {
+      path = route_leg(skeleton, e, far, near, start, start_reach, goal_around(skeleton, near));
+      if(!path.empty())
+        add_path(skeleton, path, coarse_path);
+    }
+    else
+    {
+      // A short branch between two nodes on the skeleton already (the waist of a figure
+      // eight): from node to node, next to the skeleton around both.
+      const Voxel_key goal = m_fine_node[std::size_t(near)];
+      path = route_leg(skeleton, e, far, near, start, start_reach,
+                       [&](const Voxel_key& k) { return squared_distance_between(k, goal) <= 3; }, true);
+      if(!path.empty())
+        add_path(skeleton, path, coarse_path);
+    }
+    if(path.empty())
+      add_along_coarser_branch(skeleton, coarse_path);
+    return !path.empty();
+  }
+
+  // The goal of a branch routed to node `near`: its finer voxel, or a voxel next to the
+  // skeleton around it that touches the skeleton in one place, so that the branch closes no
+  // cycle there.
+  template <typename VoxelSet>
+  auto goal_around(const VoxelSet& skeleton, int near) const
+  {
     const Voxel_key goal = m_fine_node[std::size_t(near)];
-    open_window(skeleton, coarse_path, far, near);
-    auto near_skeleton = [&](std::size_t i) { return m_cells[i].near_skeleton; };
-    // A goal touches the skeleton around the near node in one place, so that the branch
-    // closes no cycle there; no other voxel of the path touches it, but around the far node
-    // when that is already on the skeleton (a branch that closes one of the coarser cycles).
-    auto is_goal = [&](const Voxel_key& k) {
-      return k == goal || (near_skeleton(m_layout.index(k)) && near_node(k, near) && touches_once(skeleton, k));
+    return [this, &skeleton, near, goal](const Voxel_key& k) {
+      return k == goal || (m_cells[m_layout.index(k)].near_skeleton && near_node(k, near) && touches_once(skeleton, k));
     };
-    const bool far_on_skeleton = skeleton.contains(start);
+  }
+
+  // One search of branch `e` from `start` to a voxel that `is_goal` accepts, in the window of
+  // the branch (reopened, for the skeleton as it is now). No voxel of the path but its goal
+  // touches the skeleton, except within `start_reach` of `start` when `start` is on it (or
+  // on `avoid`), and around the near node when `near_may_touch`; none touches the voxels of
+  // `avoid` (a leg not yet on the skeleton) but within `start_reach` of `start`. Returns the
+  // path from `start` to the goal, or nothing.
+  template <typename VoxelSet, typename IsGoal>
+  std::vector<Voxel_key> route_leg(const VoxelSet& skeleton, int e, int far, int near, const Voxel_key& start,
+                                   double start_reach, const IsGoal& is_goal, bool near_may_touch = false,
+                                   const std::vector<Voxel_key>* avoid = nullptr)
+  {
+    const Voxel_branches::Branch& branch = m_coarse.branches[std::size_t(e)];
+    open_window(skeleton, branch.voxels, far, near);
+    if(!m_layout.box.contains(start))
+      return {};
+    const bool start_on_skeleton = skeleton.contains(start) || avoid != nullptr;
+    if(avoid != nullptr)
+      for(const Voxel_key& k : *avoid)
+        for(const Voxel_key& offset : neighbourhood_26())
+          if(m_layout.box.contains(k + offset) &&
+             double(squared_distance_between(k + offset, start)) > start_reach * start_reach)
+            m_cells[m_layout.index(k + offset)].avoided = true;
     auto passable = [&](std::size_t i, const Voxel_key& k) {
       if(!m_fine.inside(k))
         return false;
       const std::int32_t label = label_of(i, k);
-      if(label < 0 || m_allowed[std::size_t(label)] != e)
+      if(label < 0 || m_allowed[std::size_t(label)] != e || m_cells[i].avoided)
         return false;
-      return !near_skeleton(i) || is_goal(k) || (far_on_skeleton && near_node(k, far));
+      return !m_cells[i].near_skeleton || is_goal(k) || (near_may_touch && near_node(k, near)) ||
+             (start_on_skeleton && double(squared_distance_between(k, start)) <= start_reach * start_reach);
     };
+    const Voxel_key goal = m_fine_node[std::size_t(near)];
     const double reach = m_node_radius[std::size_t(near)] + 2;
     const std::size_t node_label = m_coarse.branches.size();
     const double largest_radius = (std::max)({m_largest_radius_of_label[std::size_t(e)],
                                               m_largest_radius_of_label[node_label + std::size_t(far)],
                                               m_largest_radius_of_label[node_label + std::size_t(near)], 1.0});
+    // A lower bound of the cost to the near node's goals; through the middle of a cycle's
+    // branch, the middle is farther, and the bound holds still.
     auto estimate = [&](const Voxel_key& k) {
       return (std::max)(0.0, std::sqrt(double(squared_distance_between(k, goal))) - reach) / largest_radius;
     };
-    const std::vector<Voxel_key> path = m_layout.box.contains(start) ? search(start, is_goal, passable, estimate)
-                                                                     : std::vector<Voxel_key>();
-    if(path.empty())
-    {
-      add_along_coarser_branch(skeleton, coarse_path);
-      return false;
-    }
+    return search(start, is_goal, passable, estimate);
+  }
+
+  // Adds the voxels of `path`, each standing for the voxel of `coarse_path` at the same
+  // share of its length.
+  template <typename VoxelSet>
+  void add_path(VoxelSet& skeleton, const std::vector<Voxel_key>& path, const std::vector<Voxel_key>& coarse_path)
+  {
     for(std::size_t i = 0; i < path.size(); ++i)
     {
       const std::size_t along = path.size() == 1 ? 0 : i * (coarse_path.size() - 1) / (path.size() - 1);
       add(skeleton, path[i], coarse_path[along]);
     }
-    return true;
   }
 
   // The straight voxel paths between the finer voxels of consecutive voxels of the coarser
