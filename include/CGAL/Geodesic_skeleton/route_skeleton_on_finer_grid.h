@@ -225,7 +225,6 @@ public:
       m_allowed(coarse.branches.size() + coarse.nodes.size(), -1),
       m_coarser_voxel(coarser_voxel)
   {
-    map_fine_to_coarse();
     for(const Voxel_key& k : coarse.nodes)
     {
       m_fine_node.push_back(most_central_fine_voxel(k));
@@ -333,41 +332,17 @@ private:
     });
   }
 
-  // The affine map from the finer grid's voxels to the coarser grid's coordinates (the grids
-  // share their axes).
-  void map_fine_to_coarse()
-  {
-    const Voxel_frame& fine = m_fine.frame();
-    m_origin = m_coarse_frame.to_grid(fine.to_world(Vec3{0.5, 0.5, 0.5}));
-    for(std::size_t i = 0; i < 3; ++i)
-    {
-      Vec3 g{0.5, 0.5, 0.5};
-      g[i] += 1;
-      const Vec3 moved = m_coarse_frame.to_grid(fine.to_world(g));
-      for(std::size_t c = 0; c < 3; ++c)
-        m_step[i][c] = moved[c] - m_origin[c];
-    }
-  }
-
   // The label of the coarser voxel of the finer voxel `k` (and its steps from the coarser
   // skeleton, cached beside it).
   std::int32_t label_of(std::size_t i, const Voxel_key& k)
   {
     if(m_cells[i].label_plus_two == 0)
     {
-      const Voxel_key coarse = coarse_voxel_of(k);
+      const Voxel_key coarse = voxel_in_frame(m_fine.frame(), m_coarse_frame, k);
       m_cells[i].label_plus_two = m_labels.at(coarse) + 2;
       m_cells[i].off_skeleton = std::uint8_t(m_labels.steps_at(coarse));
     }
     return m_cells[i].label_plus_two - 2;
-  }
-
-  Voxel_key coarse_voxel_of(const Voxel_key& k) const
-  {
-    Vec3 g;
-    for(std::size_t c = 0; c < 3; ++c)
-      g[c] = m_origin[c] + k.x * m_step[0][c] + k.y * m_step[1][c] + k.z * m_step[2][c];
-    return cell_of(g);
   }
 
   // The cheapest path from `start` to the first voxel that `is_goal` accepts through the
@@ -688,8 +663,6 @@ private:
   Grid_layout m_layout{Voxel_box{}};         // the window of the branch being routed
   std::vector<Cell> m_cells;                 // per voxel of the window
   std::vector<int> m_allowed;                // per label: the branch being routed that may pass it
-  Vec3 m_origin{};                           // the coarser grid coordinates of the first finer voxel
-  std::array<Vec3, 3> m_step{};              // and of a step along each axis of the finer grid
   std::vector<Voxel_key> m_fine_node;
   std::vector<double> m_node_radius;
   std::vector<double> m_largest_radius_of_label;

@@ -36,6 +36,22 @@ inline double sheet_half_width(double rounds, double voxel_size)
   return (std::max)(0.0, rounds - shell_rounds) * voxel_size;
 }
 
+// sheet_half_widths() with each vertex's sheet radius read at the voxel `voxel_of(k)` for
+// its own voxel `k` (a voxel of the grid the radii were measured on).
+template <typename CurveSkeleton, typename VoxelOf>
+std::vector<double> sheet_half_widths_at(const CurveSkeleton& curve, const Sheet_radii& sheet_radii,
+                                         double voxel_size, const VoxelOf& voxel_of)
+{
+  std::vector<double> widths(num_vertices(curve), 0.0);
+  for(std::size_t v = 0; v < widths.size(); ++v)
+  {
+    const auto sheet = sheet_radii.find(voxel_of(curve[v].voxel));
+    if(sheet != sheet_radii.end())
+      widths[v] = sheet_half_width(sheet->second, voxel_size);
+  }
+  return widths;
+}
+
 } // namespace internal
 
 /// \ingroup PkgGeodesicSkeletonRef
@@ -65,14 +81,7 @@ std::vector<double> sheet_half_widths(const CurveSkeleton& curve, const Sheet_ra
 {
   if(!(voxel_size > 0) || !std::isfinite(voxel_size))
     throw std::invalid_argument("sheet_half_widths: the voxel size must be finite and positive");
-  std::vector<double> widths(num_vertices(curve), 0.0);
-  for(std::size_t v = 0; v < widths.size(); ++v)
-  {
-    const auto sheet = sheet_radii.find(curve[v].voxel);
-    if(sheet != sheet_radii.end())
-      widths[v] = internal::sheet_half_width(sheet->second, voxel_size);
-  }
-  return widths;
+  return internal::sheet_half_widths_at(curve, sheet_radii, voxel_size, [](const Voxel_key& k) { return k; });
 }
 
 /// \ingroup PkgGeodesicSkeletonRef

@@ -139,15 +139,10 @@ template <typename CurveSkeleton>
 std::vector<double> sheet_half_widths_through(const CurveSkeleton& curve, const Sheet_radii& sheet_radii,
                                               const Coarser_voxel_map& coarser_voxel, double voxel_size)
 {
-  std::vector<double> widths(num_vertices(curve), 0.0);
-  for(std::size_t v = 0; v < widths.size(); ++v)
-  {
-    const auto coarser = coarser_voxel.find(curve[v].voxel);
-    const auto sheet = sheet_radii.find(coarser == coarser_voxel.end() ? curve[v].voxel : coarser->second);
-    if(sheet != sheet_radii.end())
-      widths[v] = sheet_half_width(sheet->second, voxel_size);
-  }
-  return widths;
+  return sheet_half_widths_at(curve, sheet_radii, voxel_size, [&](const Voxel_key& k) {
+    const auto coarser = coarser_voxel.find(k);
+    return coarser == coarser_voxel.end() ? k : coarser->second;
+  });
 }
 
 // A visitor of any type, behind one type.
