@@ -4,6 +4,7 @@
 #include <CGAL/Geodesic_skeleton/extract_control_skeleton.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <Geodesic_skeleton_test/rigs.h>
@@ -41,6 +42,30 @@ double weight_of(const gs::Bone_weights& w, std::size_t bone)
       return w.weight[i];
   return 0;
 }
+
+// A bar of radius 1 and length 20 along z (`segments` segments long), with two bones, each
+// a segment, skinned at resolution 96.
+struct Two_bones_on_a_bar
+{
+  Mesh mesh;
+  std::vector<gs::Bone_weights> weights;
+
+  Two_bones_on_a_bar(const std::vector<Point>& first, const std::vector<Point>& second, int segments)
+      : mesh(shapes::mesh_of<Mesh>(shapes::cylinder(1, 20, 24, segments, true)))
+  {
+    weights = weights_of(mesh, chain_skeleton(second, chain_skeleton(first)), params::resolution(96));
+  }
+
+  template <typename Predicate>
+  std::vector<vertex_descriptor> vertices_where(Predicate keep) const
+  {
+    std::vector<vertex_descriptor> kept;
+    for(vertex_descriptor v : vertices(mesh))
+      if(keep(mesh.point(v)))
+        kept.push_back(v);
+    return kept;
+  }
+};
 
 } // namespace
 
@@ -150,6 +175,52 @@ BOOST_AUTO_TEST_CASE(distances_run_through_the_solid_not_through_the_air)
     BOOST_REQUIRE_EQUAL(weights[v].size(), 1u);
     BOOST_CHECK_EQUAL(weights[v].bone[0], mesh.point(v).x() < 1.3 ? 0u : 1u);
   }
+}
+
+BOOST_AUTO_TEST_CASE(a_bone_the_surface_turns_its_back_on_does_not_take_it)
+{
+  // A bar with its bone along the axis, and a prop's bone outside it, 0.3 from its +x side
+  // (a sword held along a thigh). The +x side is 0.3 from the prop's bone in straight line
+  // and 1 from its own, but it faces away from the prop's bone: it stays with the bar's.
+  const Two_bones_on_a_bar bar({Point(0, 0, 2), Point(0, 0, 18)}, {Point(1.3, 0, 5), Point(1.3, 0, 15)}, 46);
+  std::size_t facing_the_prop = 0;
+  for(vertex_descriptor v : bar.vertices_where([](const Point& p) { return p.x() > 0.9 && p.z() > 7 && p.z() < 13; }))
+  {
+    BOOST_CHECK_EQUAL(bar.weights[v].bone[0], 0u);
+    BOOST_CHECK_LT(weight_of(bar.weights[v], 1), 0.1);
+    ++facing_the_prop;
+  }
+  BOOST_CHECK_GT(facing_the_prop, 20u);
+}
+
+BOOST_AUTO_TEST_CASE(bones_at_the_same_distance_share_the_heat)
+{
+  // Two bones leave the middle of a bar in opposite directions: on the ring through their
+  // common end, both are at the same distance, and neither takes the ring because the
+  // searches happened to reach it first.
+  const Two_bones_on_a_bar bar({Point(0, 0, 10), Point(0, 0, 1)}, {Point(0, 0, 10), Point(0, 0, 19)}, 40);
+  const auto ring = bar.vertices_where([](const Point& p) { return std::abs(p.z() - 10) < 1e-9 && std::abs(p.x()) < 2; });
+  BOOST_CHECK_EQUAL(ring.size(), 24u);
+  for(vertex_descriptor v : ring)
+    BOOST_CHECK_SMALL(weight_of(bar.weights[v], 0) - weight_of(bar.weights[v], 1), 0.02);
+}
+
+BOOST_AUTO_TEST_CASE(the_weights_do_not_depend_on_the_winding)
+{
+  // Outward normals come from each piece's signed volume, not from the modeller's winding.
+  const auto [cow, control] = shapes::demo_mesh_with_skeleton("cow.off");
+  const auto outward = weights_of(cow, control, CGAL::parameters::default_values());
+  Mesh inward = cow;
+  CGAL::Polygon_mesh_processing::reverse_face_orientations(inward);
+  const auto weights = weights_of(inward, control, CGAL::parameters::default_values());
+  double largest_change = 0;
+  for(vertex_descriptor v : vertices(cow))
+  {
+    BOOST_REQUIRE_EQUAL(weights[v].bone[0], outward[v].bone[0]);
+    for(std::size_t b = 0; b < num_edges(control); ++b)
+      largest_change = std::max(largest_change, std::abs(weight_of(weights[v], b) - weight_of(outward[v], b)));
+  }
+  BOOST_CHECK_LT(largest_change, 1e-4);
 }
 
 BOOST_AUTO_TEST_CASE(a_piece_without_bone_follows_the_nearest_bone)

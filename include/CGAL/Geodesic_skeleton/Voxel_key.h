@@ -9,6 +9,8 @@
 /// 26-neighbourhood: the vocabulary shared by every model of the `VoxelSet` concept and
 /// every voxel algorithm of the package.
 
+#include <CGAL/Geodesic_skeleton/internal/vec3.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -125,6 +127,19 @@ struct Voxel_box
 namespace internal {
 
 // The squared Euclidean distance between the centres of two voxels, in voxels.
+// Grid coordinates are moved up this far before they are rounded down to a voxel: a point
+// on a cell boundary (a voxel centre of a grid twice as coarse or fine, a skeleton point on
+// a voxel face) then falls in the same cell however its world coordinates round, so that
+// results do not change when the mesh is scaled, rotated or moved.
+constexpr double cell_boundary_bias = 1e-6;
+
+// The voxel whose cell holds the grid point `g`, a point on a cell boundary in the cell above.
+inline Voxel_key cell_of(const Vec3& g)
+{
+  return Voxel_key{int(std::floor(g[0] + cell_boundary_bias)), int(std::floor(g[1] + cell_boundary_bias)),
+                   int(std::floor(g[2] + cell_boundary_bias))};
+}
+
 inline std::int64_t squared_distance_between(const Voxel_key& a, const Voxel_key& b)
 {
   const std::int64_t dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;

@@ -75,19 +75,6 @@ inline double step_cost_through_the_middle(const Voxel_distance_field& distances
   return step_length(from, next) / mat_radius_in_voxels(distances.squared_distance(next));
 }
 
-// Grid coordinates are moved between grids up this far before they are rounded down: a
-// voxel centre of one grid that lies on a cell boundary of the other (two grids whose sizes
-// are in a ratio of 2) then falls in the same cell however the world coordinates round, so
-// that the result does not change when the mesh is rotated or moved.
-constexpr double cell_boundary_bias = 1e-6;
-
-// The voxel whose cell holds the grid point `g`, a point on a cell boundary in the cell above.
-inline Voxel_key cell_of(const Vec3& g)
-{
-  return Voxel_key{int(std::floor(g[0] + cell_boundary_bias)), int(std::floor(g[1] + cell_boundary_bias)),
-                   int(std::floor(g[2] + cell_boundary_bias))};
-}
-
 // The voxel of `to` whose cell holds the centre of voxel `k` of `from`.
 inline Voxel_key voxel_in_frame(const Voxel_frame& from, const Voxel_frame& to, const Voxel_key& k)
 {

@@ -33,13 +33,17 @@ inline double squared_distance3(const Vec3& a, const Vec3& b) { return dot3(sub(
 inline bool clearly_greater(double a, double b) { return a > b + 1e-9 * (std::abs(a) + std::abs(b)); }
 
 // Distance from p to the segment [a, b].
-inline double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b)
+inline Vec3 closest_point_on_segment(const Vec3& p, const Vec3& a, const Vec3& b)
 {
   const Vec3 ab = sub(b, a);
   const double l2 = dot3(ab, ab);
   const double t = l2 > 0 ? std::clamp(dot3(sub(p, a), ab) / l2, 0.0, 1.0) : 0.0;
-  const Vec3 q{a[0] + t * ab[0], a[1] + t * ab[1], a[2] + t * ab[2]};
-  return norm3(sub(p, q));
+  return Vec3{a[0] + t * ab[0], a[1] + t * ab[1], a[2] + t * ab[2]};
+}
+
+inline double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b)
+{
+  return norm3(sub(p, closest_point_on_segment(p, a, b)));
 }
 
 // floor() for coordinates of a grid (finite, far below 2^62), without a library call.

@@ -130,6 +130,20 @@ void voxel_dijkstra(const Solid_voxels& solid, const std::vector<std::uint32_t>&
 }
 
 // The distance from `p` to a polyline of at least one point.
+// The vector to `p` from the point of `polyline` nearest to it.
+inline Vec3 offset_from_polyline(const Vec3& p, const std::vector<Vec3>& polyline)
+{
+  Vec3 best = sub(p, polyline.front());
+  double best_length = dot3(best, best);
+  for(std::size_t i = 0; i + 1 < polyline.size(); ++i)
+    if(const Vec3 o = sub(p, closest_point_on_segment(p, polyline[i], polyline[i + 1])); dot3(o, o) < best_length)
+    {
+      best = o;
+      best_length = dot3(o, o);
+    }
+  return best;
+}
+
 inline double distance_to_polyline(const Vec3& p, const std::vector<Vec3>& polyline)
 {
   double best = norm3(sub(p, polyline.front()));
@@ -145,8 +159,7 @@ inline std::vector<std::uint32_t> rasterize_polyline(const Solid_voxels& solid, 
 {
   std::vector<std::uint32_t> voxels;
   auto add = [&](const Vec3& g) {
-    const Voxel_key k{int(floor_to_long(g[0])), int(floor_to_long(g[1])), int(floor_to_long(g[2]))};
-    const std::int32_t s = solid.solid(k);
+    const std::int32_t s = solid.solid(cell_of(g));
     if(s >= 0)
       voxels.push_back(std::uint32_t(s));
   };
@@ -213,9 +226,10 @@ struct Vertex_cells
     by_cell.reserve(grid_point.size());
     for(std::size_t v = 0; v < grid_point.size(); ++v)
     {
+      // The cell of centres is the voxel cell of the point moved by half a voxel (the mesh's
+      // extreme vertices lie on such cell boundaries: the grid's box is placed by them).
       const Vec3& g = grid_point[v];
-      const Voxel_key k{int(floor_to_long(g[0] - 0.5)), int(floor_to_long(g[1] - 0.5)),
-                        int(floor_to_long(g[2] - 0.5))};
+      const Voxel_key k = cell_of(Vec3{g[0] - 0.5, g[1] - 0.5, g[2] - 0.5});
       if(layout.box.contains(k) && k.x + 1 < layout.box.max.x && k.y + 1 < layout.box.max.y &&
          k.z + 1 < layout.box.max.z)
         by_cell.emplace_back(std::uint32_t(layout.index(k)), std::uint32_t(v));

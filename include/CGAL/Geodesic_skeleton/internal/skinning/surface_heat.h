@@ -27,18 +27,43 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
 
-// What heats each vertex: its bone and the distance to it (voxels).
+// What heats each vertex: its bone, the distance to it (voxels), and the other bones at the
+// same distance (`none` past the last), which share the heat equally.
 struct Heat_sources
 {
+  static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+  static constexpr std::size_t most_tied = 3;
+  using Tied_bones = std::array<std::uint32_t, most_tied>;
+  static Tied_bones no_tied_bones()
+  {
+    Tied_bones t;
+    t.fill(none);
+    return t;
+  }
+
   std::vector<std::uint32_t> bone;
   std::vector<double> distance;
+  std::vector<Tied_bones> tied;
+
+  // The bones that heat vertex `v`, and how many they are.
+  std::size_t heating_bones(std::size_t v, std::array<std::uint32_t, most_tied + 1>& bones) const
+  {
+    bones[0] = bone[v];
+    std::size_t count = 1;
+    for(std::uint32_t b : tied[v])
+      if(b != none)
+        bones[count++] = b;
+    return count;
+  }
 };
 
 // Keeps the `k` largest weights of a vertex.
@@ -155,10 +180,16 @@ inline bool diffuse_bone_heat(const std::vector<Vec3>& points,
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(system);
   if(solver.info() != Eigen::Success)
     return false;
-  // The bones that heat some vertex; the others have weight 0 everywhere.
-  std::vector<std::vector<std::uint32_t>> heated(bones);
+  // The vertices each bone heats, with its share of their heat; a bone that heats none has
+  // weight 0 everywhere.
+  std::vector<std::vector<std::pair<std::uint32_t, double>>> heated(bones);
+  std::array<std::uint32_t, Heat_sources::most_tied + 1> heating{};
   for(std::size_t v = 0; v < n; ++v)
-    heated[sources.bone[v]].push_back(std::uint32_t(v));
+  {
+    const std::size_t count = sources.heating_bones(v, heating);
+    for(std::size_t i = 0; i < count; ++i)
+      heated[heating[i]].emplace_back(std::uint32_t(v), 1. / double(count));
+  }
   // A few bones per solve: one pass over the factor serves them all.
   constexpr std::size_t block = 8;
   std::vector<std::uint32_t> batch;
@@ -172,8 +203,8 @@ inline bool diffuse_bone_heat(const std::vector<Vec3>& points,
       continue;
     Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(Eigen::Index(n), Eigen::Index(batch.size()));
     for(std::size_t column = 0; column < batch.size(); ++column)
-      for(std::uint32_t v : heated[batch[column]])
-        rhs(v, Eigen::Index(column)) = heat[v];
+      for(const auto& [v, share] : heated[batch[column]])
+        rhs(v, Eigen::Index(column)) = share * heat[v];
     const Eigen::MatrixXd solution = solver.solve(rhs);
     for(std::size_t column = 0; column < batch.size(); ++column)
       for(std::size_t v = 0; v < n; ++v)
