@@ -124,7 +124,7 @@ inline constexpr Parameter_range sharpness{"sharpness", 1, 16, 2.5, false, false
 inline constexpr Parameter_range minimum_weight{"minimum_weight", 0, 0.5, 0.05, false, false};
 /// `compute_skinning_weights()`: a bone may heat a vertex only when its distance through the
 /// solid is less than this many times the nearest bone's.
-inline constexpr Parameter_range influence_ratio{"influence_ratio", 1.05, 100, 2, false, false};
+inline constexpr Parameter_range influence_ratio{"influence_ratio", 1.05, 100, 1.25, false, false};
 
 } // namespace parameter_ranges
 
