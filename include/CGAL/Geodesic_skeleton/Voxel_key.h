@@ -126,7 +126,6 @@ struct Voxel_box
 
 namespace internal {
 
-// The squared Euclidean distance between the centres of two voxels, in voxels.
 // Grid coordinates are moved up this far before they are rounded down to a voxel: a point
 // on a cell boundary (a voxel centre of a grid twice as coarse or fine, a skeleton point on
 // a voxel face) then falls in the same cell however its world coordinates round, so that
@@ -140,6 +139,7 @@ inline Voxel_key cell_of(const Vec3& g)
                    int(std::floor(g[2] + cell_boundary_bias))};
 }
 
+// The squared Euclidean distance between the centres of two voxels, in voxels.
 inline std::int64_t squared_distance_between(const Voxel_key& a, const Voxel_key& b)
 {
   const std::int64_t dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;

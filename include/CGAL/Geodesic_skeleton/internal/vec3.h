@@ -32,7 +32,7 @@ inline double squared_distance3(const Vec3& a, const Vec3& b) { return dot3(sub(
 // an order that the voxels fix, does not change with a rigid motion.
 inline bool clearly_greater(double a, double b) { return a > b + 1e-9 * (std::abs(a) + std::abs(b)); }
 
-// Distance from p to the segment [a, b].
+// The point of the segment [a, b] nearest to p.
 inline Vec3 closest_point_on_segment(const Vec3& p, const Vec3& a, const Vec3& b)
 {
   const Vec3 ab = sub(b, a);
@@ -41,6 +41,7 @@ inline Vec3 closest_point_on_segment(const Vec3& p, const Vec3& a, const Vec3& b
   return Vec3{a[0] + t * ab[0], a[1] + t * ab[1], a[2] + t * ab[2]};
 }
 
+// Distance from p to the segment [a, b].
 inline double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b)
 {
   return norm3(sub(p, closest_point_on_segment(p, a, b)));

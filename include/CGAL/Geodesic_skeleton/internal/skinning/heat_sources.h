@@ -22,7 +22,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -32,7 +31,7 @@ namespace internal {
 class Heat_source_finder
 {
 public:
-  static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+  static constexpr std::uint32_t none = Heat_sources::none;
   // The distance through the solid exceeds the straight one by the voxel metric's error
   // (26 neighbours: up to 8 %) and by where in its voxels a bone runs (up to a voxel's
   // diagonal); a bone within that slack sees the vertex.

@@ -129,8 +129,7 @@ void voxel_dijkstra(const Solid_voxels& solid, const std::vector<std::uint32_t>&
   }
 }
 
-// The distance from `p` to a polyline of at least one point.
-// The vector to `p` from the point of `polyline` nearest to it.
+// The vector to `p` from the point of `polyline` (at least one point) nearest to it.
 inline Vec3 offset_from_polyline(const Vec3& p, const std::vector<Vec3>& polyline)
 {
   Vec3 best = sub(p, polyline.front());
@@ -144,12 +143,10 @@ inline Vec3 offset_from_polyline(const Vec3& p, const std::vector<Vec3>& polylin
   return best;
 }
 
+// The distance from `p` to a polyline of at least one point.
 inline double distance_to_polyline(const Vec3& p, const std::vector<Vec3>& polyline)
 {
-  double best = norm3(sub(p, polyline.front()));
-  for(std::size_t i = 0; i + 1 < polyline.size(); ++i)
-    best = std::min(best, distance_to_segment(p, polyline[i], polyline[i + 1]));
-  return best;
+  return norm3(offset_from_polyline(p, polyline));
 }
 
 // The voxels of `solid` that a polyline (grid coordinates) runs through, sampled every

@@ -6,8 +6,9 @@
 
 // The diffusion step of compute_skinning_weights(): bone heat over the surface (after Baran
 // and Popovic, Automatic Rigging and Animation of 3D Characters, SIGGRAPH 2007). Each vertex
-// v is heated by one bone, p(v), at distance d(v); the weight of bone b solves
-//   (L + diag(c A / d^2)) w_b = diag(c A / d^2) [p == b],
+// v is heated at distance d(v) by one bone, or by a few tied bones that share its heat
+// equally; with p_b(v) the share of bone b, the weight of bone b solves
+//   (L + diag(c A / d^2)) w_b = diag(c A / d^2) p_b,
 // with L the cotangent Laplacian of the surface and A the vertex areas. The weights are in
 // [0, 1] and sum to 1 at every vertex (L has non-negative edge weights: the maximum
 // principle), and the matrix is positive definite whatever the mesh (every diagonal entry
