@@ -29,7 +29,10 @@ the artist's and of those whose top joint is 3 or more bones away, the average a
 deformation over 10 random poses, bones per vertex, the largest weight, the time; for ours
 and, in the same run, for the nearest-bone rule (the floor) and for Blender's bone heat when
 --bone-heat DIR holds its outputs (ID.json, from ../shared/rigs/bone_heat_weights.py).
---scale S rigs the meshes scaled by S (the weights should not change).
+--scale S rigs the meshes scaled by S (the weights should not change). Each character is
+skinned by its own process there, so its time includes the first touch of the memory it
+needs; `-- --weights` without --skinning times the weights of our skeletons against the chain
+in the same process (the time line printed last).
 
 With --also-at RESOLUTION, the split is rigged again at that resolution, and the share of the
 characters whose joint count there is within 25 % of the first run's is printed: which joints
@@ -197,6 +200,9 @@ def main(argv):
         for r in rows:
             print(json.dumps(r))
     print(summary(rows))
+    timing = weights_timing(out, ids)
+    if timing:
+        print(timing)
     if '--also-at' in rest:
         resolution = rest[rest.index('--also-at') + 1]
         other = os.path.join(out, 'at_' + resolution)
@@ -303,6 +309,27 @@ def skin_split(skeletonize, data, split, ids, out, threads, options, scale, bone
         if far:
             print('%-13s mean share of vertices whose top joint is %d or more bones away: %.4f'
                   % (m, skinning_measures.FAR_IN_JOINTS, statistics.mean(far)))
+
+
+def weights_timing(out, ids):
+    """With `-- --weights`: the time of the weights of our skeleton against the chain's, each
+    mesh's both in the same process of the batch (so that neither pays alone for memory the
+    process has not touched yet); None without weights."""
+    chain, weights = [], []
+    for i in ids:
+        path = os.path.join(out, i + '.json')
+        timings = json.load(open(path)).get('timings_ms', {}) if os.path.exists(path) else {}
+        if 'skinning_weights' in timings and timings.get('total', 0) > 0:
+            chain.append(timings['total'])
+            weights.append(timings['skinning_weights'])
+    if not weights:
+        return None
+    ratios = [w / c for w, c in zip(weights, chain)]
+    return ('weights of our skeletons: median %.2f ms against the chain\'s %.2f ms (%.2f times); '
+            'median of the per-character ratios %.2f, %d of %d at most 1'
+            % (statistics.median(weights), statistics.median(chain),
+               statistics.median(weights) / statistics.median(chain), statistics.median(ratios),
+               sum(r <= 1 for r in ratios), len(ratios)))
 
 
 def resolution_stability(rows, other, resolution):

@@ -1,9 +1,10 @@
 // skinning_benchmark: the cost of compute_skinning_weights() against extract_control_skeleton()
 // on the closed demo meshes, at the same resolution, in the same run; and on a mesh of about
 // a million faces (armadillo.off, Loop-subdivided twice here). Per mesh: vertices, faces,
-// bones, the median times (ms) of the skeleton and of the weights and their ratio, the
-// solid's voxels, the voxels the bones' bounded searches visit per solid voxel (the bones
-// that reach a voxel, on average), and the bones per vertex.
+// bones, the median times (ms) of the skeleton and of the weights and their ratio, the same
+// with the skeleton's solid handed to the weights (as skeletonize does), the solid's voxels,
+// the voxels the bones' bounded searches visit per solid voxel (the bones that reach a voxel,
+// on average), and the bones per vertex.
 //
 //   skinning_benchmark [DATA_DIR] [--repeats N] [--meshes a,b] [--resolution R] [--no-large]
 
@@ -26,6 +27,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gs = CGAL::Geodesic_skeleton;
@@ -58,18 +60,29 @@ void run(const std::string& name, const Mesh& mesh, int repeats, int resolution)
   const double skeleton_ms =
       median_ms(repeats, [&] { gs::extract_control_skeleton(mesh, control, params::resolution(resolution)); });
   std::vector<gs::Bone_weights> weights(num_vertices(mesh));
+  const auto weight_map = boost::make_iterator_property_map(weights.begin(), get(CGAL::vertex_index, mesh));
   gs::Skinning_report report;
   const double weights_ms = median_ms(repeats, [&] {
-    report = gs::compute_skinning_weights(
-        mesh, control, boost::make_iterator_property_map(weights.begin(), get(CGAL::vertex_index, mesh)),
-        params::resolution(resolution));
+    report = gs::compute_skinning_weights(mesh, control, weight_map, params::resolution(resolution));
+  });
+  // As skeletonize skins its own skeleton: the chain hands its solid to the weights (the
+  // chain's time with the copy of its grid).
+  gs::Dense_voxel_grid solid;
+  const double skeleton_with_solid_ms = median_ms(repeats, [&] {
+    gs::extract_control_skeleton(mesh, control,
+                                 params::combine(params::resolution(resolution), params::voxelized_solid_output(&solid)));
+  });
+  const double weights_given_solid_ms = median_ms(repeats, [&] {
+    gs::compute_skinning_weights(mesh, control, weight_map,
+                                 params::combine(params::resolution(resolution), params::voxelized_solid(&std::as_const(solid))));
   });
   double influences = 0;
   for(const gs::Bone_weights& w : weights)
     influences += double(w.size());
   std::cout << "| " << name << " | " << num_vertices(mesh) << " | " << num_faces(mesh) << " | "
             << num_edges(control) << " | " << skeleton_ms << " | " << weights_ms << " | "
-            << weights_ms / skeleton_ms << " | " << report.solid_voxels << " | "
+            << weights_ms / skeleton_ms << " | " << weights_given_solid_ms << " | "
+            << weights_given_solid_ms / skeleton_with_solid_ms << " | " << report.solid_voxels << " | "
             << double(report.voxel_visits) / double(report.solid_voxels) << " | "
             << influences / double(num_vertices(mesh)) << " |" << std::endl;
 }
@@ -88,8 +101,9 @@ int main(int argc, char* argv[])
 
   std::cout << std::fixed << std::setprecision(2);
   std::cout << "resolution " << resolution << ", median of " << repeats << " runs\n\n"
-            << "| mesh | vertices | faces | bones | skeleton ms | weights ms | weights/skeleton | solid voxels"
-               " | visits per voxel | bones per vertex |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+            << "| mesh | vertices | faces | bones | skeleton ms | weights ms | weights/skeleton"
+               " | weights given the chain's solid ms | that/skeleton | solid voxels"
+               " | visits per voxel | bones per vertex |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for(const std::string& name : options.names)
   {
     Mesh mesh;

@@ -361,8 +361,10 @@ struct Skinning
   std::string input; // the mesh file
 };
 
+// `solid`: the chain's voxelization of the mesh at `o.resolution`, if it ran (none with a
+// given skeleton): the weights do not voxelize the mesh again.
 void compute_skinning(const Options& o, const std::string& input, const gs::Control_skeleton<Point>& control,
-                      Skinning& skinning)
+                      const gs::Dense_voxel_grid* solid, Skinning& skinning)
 {
   const Mesh& mesh = skinning.mesh;
   skinning.weights.assign(num_vertices(mesh), gs::Bone_weights());
@@ -373,6 +375,7 @@ void compute_skinning(const Options& o, const std::string& input, const gs::Cont
         mesh, control,
         boost::make_iterator_property_map(skinning.weights.begin(), get(CGAL::vertex_index, mesh)),
         params::combine(params::resolution(o.resolution), params::fill_holes(o.fill_holes),
+                        params::keep_surface_voxels(o.keep_surface_voxels), params::voxelized_solid(solid),
                         params::max_bones_per_vertex(o.max_bones_per_vertex), params::sharpness(o.sharpness),
                         params::minimum_weight(o.minimum_weight),
                         params::influence_ratio(o.influence_ratio),
@@ -563,6 +566,9 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
   // The thinned graph and the Reeb graph cost as much as the chain on large meshes: each is
   // computed only when asked for (the picture of the thinned skeleton, --reeb).
   const bool thinned_graph = o.svg_stage == "thinned" && !o.svg.empty();
+  // A given skeleton is there to be skinned: its report always has the weights' summary.
+  const bool skin = given_skeleton || o.weights || to_gltf || o.svg_stage == "weights";
+  gs::Dense_voxel_grid solid; // the chain's, for the weights
   if(given_skeleton)
   {
     try
@@ -591,7 +597,8 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
         params::tip_joint_setback(o.tip_joint_setback), params::joint_spacing_factor(o.joint_spacing_factor),
         params::number_of_reeb_intervals(o.reeb_intervals), params::curve_skeleton_output(&curve),
         params::thinned_skeleton_output(thinned_graph ? &thinned : nullptr),
-        params::reeb_graph_output(o.reeb_graph ? &reeb : nullptr));
+        params::reeb_graph_output(o.reeb_graph ? &reeb : nullptr),
+        params::voxelized_solid_output(skin ? &solid : nullptr));
     // Without --smallest-radius, the library's default (it depends on the mesh's extent).
     report = o.smallest_radius
                  ? gs::extract_control_skeleton(mesh, control,
@@ -603,10 +610,8 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
     throw Usage_error(input + ": " + e.what());
   }
   Skinning skinning{{}, {}, {}, mesh, input};
-  // A given skeleton is there to be skinned: its report always has the weights' summary.
-  const bool skin = given_skeleton || o.weights || to_gltf || o.svg_stage == "weights";
   if(skin)
-    compute_skinning(o, input, control, skinning);
+    compute_skinning(o, input, control, given_skeleton ? nullptr : &solid, skinning);
 
   std::string text;
   if(to_json && given_skeleton)

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 BOOST_AUTO_TEST_SUITE(skinning_weights)
@@ -239,6 +240,33 @@ BOOST_AUTO_TEST_CASE(a_piece_without_bone_follows_the_nearest_bone)
     }
 }
 
+BOOST_AUTO_TEST_CASE(the_chains_solid_gives_the_same_weights)
+{
+  // skeletonize hands the skeleton's solid to the weights instead of voxelizing twice: the
+  // weights are the same, and a solid of another resolution or mesh is refused.
+  const Mesh mesh = shapes::mesh_of<Mesh>(shapes::cylinder(1, 20, 24, 46, true));
+  Control skeleton;
+  gs::Dense_voxel_grid solid;
+  gs::extract_control_skeleton(mesh, skeleton, params::combine(params::resolution(48), params::voxelized_solid_output(&solid)));
+  BOOST_TEST_REQUIRE(num_edges(skeleton) > 0u);
+  BOOST_TEST_REQUIRE(!solid.empty());
+  const auto expected = weights_of(mesh, skeleton, params::resolution(48));
+  const auto given = weights_of(mesh, skeleton, params::combine(params::resolution(48), params::voxelized_solid(&std::as_const(solid))));
+  std::size_t differing = 0;
+  for(vertex_descriptor v : vertices(mesh))
+    differing += !(given[v].size() == expected[v].size() &&
+                   std::equal(given[v].bone.begin(), given[v].bone.begin() + given[v].size(), expected[v].bone.begin()) &&
+                   std::equal(given[v].weight.begin(), given[v].weight.begin() + given[v].size(), expected[v].weight.begin()));
+  BOOST_TEST(differing == 0u);
+  BOOST_CHECK_THROW(weights_of(mesh, skeleton, params::combine(params::resolution(64), params::voxelized_solid(&std::as_const(solid)))),
+                    std::invalid_argument);
+  const Mesh other = shapes::mesh_of<Mesh>(shapes::cylinder(1, 21, 24, 46, true));
+  BOOST_CHECK_THROW(weights_of(other, skeleton, params::combine(params::resolution(48), params::voxelized_solid(&std::as_const(solid)))),
+                    std::invalid_argument);
+  const gs::Dense_voxel_grid empty;
+  BOOST_CHECK_THROW(weights_of(mesh, skeleton, params::voxelized_solid(&empty)), std::invalid_argument);
+}
+
 BOOST_AUTO_TEST_CASE(the_weights_do_not_depend_on_the_scale)
 {
   // All lengths are in voxels and the grid follows the mesh: a character 0.01 or 100 units
@@ -310,6 +338,37 @@ BOOST_AUTO_TEST_CASE(weights_are_sharp_away_from_the_joints)
     if(std::abs(z - 5) < 2)
       BOOST_CHECK_EQUAL(weights[v].size(), 1u);
   }
+}
+
+BOOST_AUTO_TEST_CASE(the_solve_in_rows_is_the_solvers_solve)
+{
+  // The diffusion's solve of several bones in one pass over the factor gives, to the last
+  // bit, what Eigen's solve gives one column at a time.
+  const Mesh mesh = bar();
+  std::vector<gs::internal::Vec3> points;
+  for(vertex_descriptor v : vertices(mesh))
+    points.push_back({mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()});
+  const auto triangles = gs::internal::triangles_of(mesh, get(CGAL::vertex_index, mesh));
+  std::vector<double> heat;
+  const auto system = gs::internal::screened_cotangent_laplacian(
+      points, triangles, [](std::size_t v, double area) { return area / double(1 + v % 7); }, heat);
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(system);
+  BOOST_TEST_REQUIRE(solver.info() == Eigen::Success);
+  const std::size_t n = points.size(), width = 3;
+  Eigen::MatrixXd columns = Eigen::MatrixXd::Zero(Eigen::Index(n), Eigen::Index(width));
+  std::vector<double> rows(n * width, 0.);
+  for(std::size_t v = 0; v < n; ++v)
+    for(std::size_t c = 0; c < width; ++c)
+      if((v + c) % 5 == 0) // sparse, as a bone's heat is
+        columns(Eigen::Index(v), Eigen::Index(c)) = rows[v * width + c] = heat[v] * double(c + 1);
+  const Eigen::MatrixXd expected = solver.solve(columns);
+  gs::internal::solve_in_rows(solver, rows, width);
+  std::size_t differing = 0;
+  for(std::size_t v = 0; v < n; ++v)
+    for(std::size_t c = 0; c < width; ++c)
+      differing += rows[v * width + c] != expected(Eigen::Index(v), Eigen::Index(c));
+  BOOST_TEST(differing == 0u);
+  BOOST_TEST(expected.norm() > 0);
 }
 
 BOOST_AUTO_TEST_CASE(bad_parameters_and_skeletons_are_refused)

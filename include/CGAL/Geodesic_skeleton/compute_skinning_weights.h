@@ -80,6 +80,24 @@ std::vector<Vec3> bone_polyline_in_grid(const Control_skeleton<Point>& skeleton,
   return polyline;
 }
 
+// Throws unless `grid` has the frame that voxelize() gives `mesh` with the parameters `np`
+// (a grid of another mesh, or at another resolution, would give wrong weights silently).
+template <typename TriangleMesh, typename VertexPointMap, typename NamedParameters>
+void check_voxelized_solid(const TriangleMesh& mesh, const VertexPointMap& vpm, const Dense_voxel_grid& grid,
+                           const NamedParameters& np, const char* caller)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const int resolution = checked_parameter(
+      parameter_ranges::resolution,
+      choose_parameter(get_parameter(np, internal_np::resolution_tag), default_voxel_resolution), caller);
+  Voxel_box box;
+  const Voxel_frame frame = grid_frame(mesh_triangles(mesh, vpm, caller), resolution, 1, box, caller);
+  if(!(grid.frame() == frame) || grid.empty())
+    throw std::invalid_argument(std::string(caller) + ": the voxelized_solid is not the solid voxelize() gives this "
+                                "mesh at resolution " + std::to_string(resolution));
+}
+
 template <typename Point>
 void check_bones(const Control_skeleton<Point>& skeleton, const char* caller)
 {
@@ -237,6 +255,19 @@ inline void normalise(Bone_weights& weights)
 ///                     solid's box, 16 per solid voxel and about 900 per vertex (the sparse factorisation), besides
 ///                     `voxelize()`'s.}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{voxelized_solid}
+///     \cgalParamDescription{the solid that `voxelize()` gives this mesh with the parameters
+///                           above, such as `extract_control_skeleton()`'s
+///                           `voxelized_solid_output`: it is used instead of voxelizing the
+///                           mesh again (package parameter)}
+///     \cgalParamType{a pointer to a `const Dense_voxel_grid`}
+///     \cgalParamDefault{none: the mesh is voxelized}
+///     \cgalParamExtra{A grid whose frame is not the one `voxelize()` gives this mesh at
+///                     `resolution` (another mesh's, another resolution's) is refused
+///                     (`std::invalid_argument`); the frame costs O(F). A grid of the right
+///                     frame but other `fill_holes` or `keep_surface_voxels` settings is
+///                     used as it is.}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_index_map}
 ///     \cgalParamDescription{a vertex index map}
 ///     \cgalParamType{a model of `ReadablePropertyMap` with the mesh's vertex descriptor as
@@ -292,13 +323,20 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   const double limit = internal::memory_limit(np, caller);
 
   Skinning_report report;
-  Dense_voxel_grid grid;
-  report.solid_voxels = voxelize(mesh, grid, np);
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, mesh));
+  Dense_voxel_grid own_grid;
+  const Dense_voxel_grid* given_grid =
+      choose_parameter(get_parameter(np, internal_np::voxelized_solid_tag), static_cast<const Dense_voxel_grid*>(nullptr));
+  if(given_grid != nullptr)
+    internal::check_voxelized_solid(mesh, vpm, *given_grid, np, caller);
+  else
+    voxelize(mesh, own_grid, np);
+  const Dense_voxel_grid& grid = given_grid != nullptr ? *given_grid : own_grid;
+  report.solid_voxels = grid.size();
   const Voxel_frame frame = grid.frame();
   report.voxel_size = frame.voxel_size();
 
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, mesh));
   const auto vim = CGAL::get_initialized_vertex_index_map(mesh, np);
   const std::size_t n = num_vertices(mesh);
   {
@@ -307,7 +345,7 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
                              limit, layout, caller, "the distance fields of a grid");
   }
   const internal::Solid_voxels solid(grid);
-  grid = Dense_voxel_grid(); // the solid is indexed: free the grid
+  own_grid = Dense_voxel_grid(); // the solid is indexed: free the grid
 
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   std::vector<vertex_descriptor> vertex_of(n);

@@ -163,7 +163,7 @@ namespace Geodesic_skeleton {
 ///                           to its vertices (package parameter)}
 ///     \cgalParamType{a pointer to a `Curve_skeleton<Point, vertex_descriptor>`}
 ///     \cgalParamDefault{none}
-///     \cgalParamExtra{For this output and the next two, a null pointer is the same as
+///     \cgalParamExtra{For this output and the next three, a null pointer is the same as
 ///                     none.}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{thinned_skeleton_output}
@@ -171,6 +171,16 @@ namespace Geodesic_skeleton {
 ///                           (package parameter)}
 ///     \cgalParamType{a pointer to a `Curve_skeleton<Point, vertex_descriptor>`}
 ///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{voxelized_solid_output}
+///     \cgalParamDescription{receives the solid as `voxelize()` gives it for the mesh at
+///                           `resolution` (with `fill_holes`, `keep_surface_voxels`,
+///                           `memory_limit` and `vertex_point_map`), before any stage changes
+///                           it: `compute_skinning_weights()` takes it (its `voxelized_solid`)
+///                           instead of voxelizing the mesh again (package parameter)}
+///     \cgalParamType{a pointer to a `Dense_voxel_grid`}
+///     \cgalParamDefault{none}
+///     \cgalParamExtra{A copy of the grid: O(V_box) more time and memory.}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{reeb_graph_output}
 ///     \cgalParamDescription{receives the Reeb graph of the geodesic mapping function
@@ -223,7 +233,8 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
                                     get_const_property_map(CGAL::vertex_point, mesh));
   internal::extract_control_skeleton_with(
       mesh, vpm, out, settings, internal::output_pointer<Skeleton>(np, internal_np::curve_skeleton_output_tag),
-      internal::output_pointer<Skeleton>(np, internal_np::thinned_skeleton_output_tag), clock, report);
+      internal::output_pointer<Skeleton>(np, internal_np::thinned_skeleton_output_tag),
+      internal::output_pointer<Dense_voxel_grid>(np, internal_np::voxelized_solid_output_tag), clock, report);
   if(Reeb_graph<FaceGraph>* reeb = internal::output_pointer<Reeb_graph<FaceGraph>>(np, internal_np::reeb_graph_output_tag))
   {
     const std::size_t intervals =

@@ -58,6 +58,10 @@ CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(joint_spacing_factor)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(curve_skeleton_output)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(thinned_skeleton_output)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(reeb_graph_output)
+
+// extract_control_skeleton (output); compute_skinning_weights (input)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(voxelized_solid_output)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(voxelized_solid)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(number_of_reeb_intervals)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(level_of_detail_resolution)
 

@@ -52,7 +52,7 @@ void extract_control_skeleton_with(
     const Control_skeleton_settings& settings,
     Curve_skeleton<Point, typename boost::graph_traits<FaceGraph>::vertex_descriptor>* curve_output,
     Curve_skeleton<Point, typename boost::graph_traits<FaceGraph>::vertex_descriptor>* thinned_output,
-    Stage_clock<Stage_visitor>& clock, Control_skeleton_report& report)
+    Dense_voxel_grid* solid_output, Stage_clock<Stage_visitor>& clock, Control_skeleton_report& report)
 {
   using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
   using Skeleton = Curve_skeleton<Point, vertex_descriptor>;
@@ -79,6 +79,8 @@ void extract_control_skeleton_with(
   Voxelized_surface surface;
   report.solid_voxels = voxelize(mesh, solid, parameters::combine(parameters::voxelized_surface_output(&surface), np));
   const double pruning_voxel_size = solid.frame().voxel_size();
+  if(solid_output != nullptr && !finer_than_level_of_detail)
+    *solid_output = solid;
   clock.finished("voxelize");
   const auto with_surface = parameters::combine(parameters::voxelized_surface(&std::as_const(surface)), np);
 
@@ -137,6 +139,8 @@ void extract_control_skeleton_with(
     Dense_voxel_grid fine_solid;
     surface = Voxelized_surface();
     voxelize(mesh, fine_solid, parameters::combine(parameters::voxelized_surface_output(&surface), fine_np));
+    if(solid_output != nullptr)
+      *solid_output = fine_solid;
     report.voxels_joining_pieces = add_skeleton_to_solid(skeleton, fine_solid);
     report.solid_voxels = fine_solid.size();
     clock.finished("voxelize_finer");

@@ -30,6 +30,7 @@
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -116,10 +117,11 @@ inline double clamped_cotangent(const Vec3& apex, const Vec3& a, const Vec3& b)
   return std::clamp(dot_uv / cross_norm, 0., 1000.);
 }
 
-// L + diag(heat): the cotangent Laplacian (L(i, i) = the sum of the edge weights of i,
-// L(i, j) = -w_ij) of triangles given as vertex index triples over `points`, screened by the
-// heat of each vertex, `heat_of_area(v, A)` for its area A (a third of each incident
-// triangle's), which `heat` receives.
+// The lower triangle of L + diag(heat) (all that a solver of symmetric systems reads): the
+// cotangent Laplacian (L(i, i) = the sum of the edge weights of i, L(i, j) = -w_ij) of
+// triangles given as vertex index triples over `points`, screened by the heat of each
+// vertex, `heat_of_area(v, A)` for its area A (a third of each incident triangle's), which
+// `heat` receives.
 template <typename HeatOfArea>
 Eigen::SparseMatrix<double> screened_cotangent_laplacian(const std::vector<Vec3>& points,
                                                          const std::vector<std::array<std::uint32_t, 3>>& triangles,
@@ -127,7 +129,7 @@ Eigen::SparseMatrix<double> screened_cotangent_laplacian(const std::vector<Vec3>
 {
   const std::size_t n = points.size();
   std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(6 * triangles.size() + n);
+  entries.reserve(3 * triangles.size() + n);
   std::vector<double> diagonal(n, 0.), area(n, 0.);
   for(const auto& t : triangles)
   {
@@ -138,8 +140,7 @@ Eigen::SparseMatrix<double> screened_cotangent_laplacian(const std::vector<Vec3>
       const double w = 0.5 * clamped_cotangent(points[apex], points[i], points[j]);
       if(w == 0)
         continue;
-      entries.emplace_back(i, j, -w);
-      entries.emplace_back(j, i, -w);
+      entries.emplace_back(std::max(i, j), std::min(i, j), -w);
       diagonal[i] += w;
       diagonal[j] += w;
     }
@@ -157,6 +158,59 @@ Eigen::SparseMatrix<double> screened_cotangent_laplacian(const std::vector<Vec3>
   Eigen::SparseMatrix<double> matrix(size, size);
   matrix.setFromTriplets(entries.begin(), entries.end());
   return matrix;
+}
+
+// Solves A X = B with the factorisation P A P^T = L D L^T of `solver` (an Eigen
+// SimplicialLDLT), for the `width` columns of B given row by row in `x` (x[i * width + c] is
+// B(i, c)), which receives X likewise. It does what the solver's solve() does, in the same
+// order of operations, but in one pass over the factor for all the columns, where solve()
+// makes one per column: the factor is read `width` times less.
+template <typename Solver>
+void solve_in_rows(const Solver& solver, std::vector<double>& x, std::size_t width)
+{
+  const auto& factor = solver.matrixL().nestedExpression(); // L, unit diagonal, by columns
+  const auto& diagonal = solver.vectorD();
+  const auto& to_factor = solver.permutationP().indices();
+  const auto& from_factor = solver.permutationPinv().indices();
+  using Factor = std::decay_t<decltype(factor)>;
+  const std::size_t n = std::size_t(factor.cols());
+  std::vector<double> y(x.size());
+  auto row = [width](std::vector<double>& m, std::size_t i) { return m.data() + i * width; };
+  for(std::size_t i = 0; i < n; ++i)
+    std::copy_n(row(x, i), width, row(y, std::size_t(to_factor[Eigen::Index(i)])));
+  for(std::size_t j = 0; j < n; ++j) // L z = y, column by column
+  {
+    const double* yj = row(y, j);
+    if(std::all_of(yj, yj + width, [](double v) { return v == 0; }))
+      continue;
+    for(typename Factor::InnerIterator it(factor, Eigen::Index(j)); it; ++it)
+      if(const std::size_t i = std::size_t(it.index()); i > j)
+      {
+        double* yi = row(y, i);
+        for(std::size_t c = 0; c < width; ++c)
+          yi[c] -= yj[c] * it.value();
+      }
+  }
+  for(std::size_t j = 0; j < n; ++j) // D^-1
+  {
+    const double inverse = 1. / diagonal[Eigen::Index(j)];
+    double* yj = row(y, j);
+    for(std::size_t c = 0; c < width; ++c)
+      yj[c] = inverse * yj[c];
+  }
+  for(std::size_t j = n; j-- > 0;) // L^T z = y, row by row of L^T
+  {
+    double* yj = row(y, j);
+    for(typename Factor::InnerIterator it(factor, Eigen::Index(j)); it; ++it)
+      if(const std::size_t i = std::size_t(it.index()); i > j)
+      {
+        const double* yi = row(y, i);
+        for(std::size_t c = 0; c < width; ++c)
+          yj[c] -= it.value() * yi[c];
+      }
+  }
+  for(std::size_t i = 0; i < n; ++i)
+    std::copy_n(row(y, i), width, row(x, std::size_t(from_factor[Eigen::Index(i)])));
 }
 
 // Diffuses the bones' heat over the surface and keeps, per vertex, the `k` largest weights
@@ -194,6 +248,7 @@ inline bool diffuse_bone_heat(const std::vector<Vec3>& points,
   // A few bones per solve: one pass over the factor serves them all.
   constexpr std::size_t block = 8;
   std::vector<std::uint32_t> batch;
+  std::vector<double> block_weights;
   for(std::size_t first = 0; first < bones;)
   {
     batch.clear();
@@ -202,14 +257,15 @@ inline bool diffuse_bone_heat(const std::vector<Vec3>& points,
         batch.push_back(std::uint32_t(first));
     if(batch.empty())
       continue;
-    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(Eigen::Index(n), Eigen::Index(batch.size()));
-    for(std::size_t column = 0; column < batch.size(); ++column)
+    const std::size_t width = batch.size();
+    block_weights.assign(n * width, 0.);
+    for(std::size_t column = 0; column < width; ++column)
       for(const auto& [v, share] : heated[batch[column]])
-        rhs(v, Eigen::Index(column)) = share * heat[v];
-    const Eigen::MatrixXd solution = solver.solve(rhs);
-    for(std::size_t column = 0; column < batch.size(); ++column)
-      for(std::size_t v = 0; v < n; ++v)
-        if(const double w = solution(Eigen::Index(v), Eigen::Index(column)); w > negligible)
+        block_weights[v * width + column] = share * heat[v];
+    solve_in_rows(solver, block_weights, width);
+    for(std::size_t v = 0; v < n; ++v)
+      for(std::size_t column = 0; column < width; ++column)
+        if(const double w = block_weights[v * width + column]; w > negligible)
           keep_largest(weights[v], k, batch[column], float(w));
   }
   return true;
