@@ -283,7 +283,8 @@ inline void normalise(Bone_weights& weights)
 ///         range (the message names it); what `voxelize()` throws.
 /// \throws std::length_error when the fields would need more memory than `memory_limit`.
 ///
-/// \b Complexity: `voxelize()`'s, plus O(V) for the nearest-bone search over the V solid
+/// \b Complexity: `voxelize()`'s (O(F) for the check of the frame instead, with a
+/// `voxelized_solid`), plus O(V) for the nearest-bone search over the V solid
 /// voxels (a bucket queue), plus O(V_b) per bone for the V_b voxels its bounded search visits
 /// (in total a small multiple of V: `Skinning_report::voxel_visits`), plus O(N B_v P) for
 /// N vertices, B_v bones reaching a vertex and P points per bone polyline, plus the sparse
