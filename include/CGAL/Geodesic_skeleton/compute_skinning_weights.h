@@ -86,13 +86,9 @@ template <typename TriangleMesh, typename VertexPointMap, typename NamedParamete
 void check_voxelized_solid(const TriangleMesh& mesh, const VertexPointMap& vpm, const Dense_voxel_grid& grid,
                            const NamedParameters& np, const char* caller)
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const int resolution = checked_parameter(
-      parameter_ranges::resolution,
-      choose_parameter(get_parameter(np, internal_np::resolution_tag), default_voxel_resolution), caller);
+  const int resolution = voxelize_settings(np, caller).resolution;
   Voxel_box box;
-  const Voxel_frame frame = grid_frame(mesh_triangles(mesh, vpm, caller), resolution, 1, box, caller);
+  const Voxel_frame frame = voxelize_frame(mesh_triangles(mesh, vpm, caller), resolution, box, caller);
   if(!(grid.frame() == frame) || grid.empty())
     throw std::invalid_argument(std::string(caller) + ": the voxelized_solid is not the solid voxelize() gives this "
                                 "mesh at resolution " + std::to_string(resolution));

@@ -184,6 +184,32 @@ struct Voxelize_settings
   Voxelized_surface* rasterised; // receives the triangles rasterised, when not null
 };
 
+// The frame and box of voxelize()'s grid for the mesh's triangles: one empty voxel all
+// around the mesh.
+inline Voxel_frame voxelize_frame(const std::vector<Triangle3>& triangles, int resolution, Voxel_box& box,
+                                  const char* caller)
+{
+  return grid_frame(triangles, resolution, 1, box, caller);
+}
+
+// voxelize()'s parameters, read (and checked) from `np`.
+template <typename NamedParameters>
+Voxelize_settings voxelize_settings(const NamedParameters& np, const char* caller)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Voxelize_settings settings;
+  settings.resolution = internal::checked_parameter(
+      parameter_ranges::resolution,
+      choose_parameter(get_parameter(np, internal_np::resolution_tag), default_voxel_resolution), caller);
+  settings.fill_holes = choose_parameter(get_parameter(np, internal_np::fill_holes_tag), true);
+  settings.keep_surface_voxels = choose_parameter(get_parameter(np, internal_np::keep_surface_voxels_tag), true);
+  settings.memory_limit = internal::memory_limit(np, caller); // checked before any work
+  settings.rasterised = choose_parameter(get_parameter(np, internal_np::voxelized_surface_output_tag),
+                                         static_cast<Voxelized_surface*>(nullptr));
+  return settings;
+}
+
 // voxelize() once its parameters are read: compiled once per mesh, point map and voxel set
 // type, whatever the parameter pack.
 template <typename FaceGraph, typename VertexPointMap, typename VoxelSet>
@@ -197,7 +223,7 @@ std::size_t voxelize_with(const FaceGraph& mesh, const VertexPointMap& vpm, Voxe
   std::vector<internal::Triangle3> triangles = internal::mesh_triangles(mesh, vpm, caller);
 
   Voxel_box box;
-  const Voxel_frame frame = internal::grid_frame(triangles, resolution, 1, box, caller);
+  const Voxel_frame frame = voxelize_frame(triangles, resolution, box, caller);
   const std::size_t mesh_triangle_count = triangles.size();
   internal::close_holes(mesh, vpm, triangles, fill_holes);
   const internal::Grid_layout layout(box);
@@ -263,16 +289,7 @@ std::size_t voxelize_impl(const FaceGraph& mesh, VoxelSet& voxels, const NamedPa
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const char* caller = "voxelize";
-  Voxelize_settings settings;
-  settings.resolution = internal::checked_parameter(
-      parameter_ranges::resolution,
-      choose_parameter(get_parameter(np, internal_np::resolution_tag), default_voxel_resolution), caller);
-  settings.fill_holes = choose_parameter(get_parameter(np, internal_np::fill_holes_tag), true);
-  settings.keep_surface_voxels = choose_parameter(get_parameter(np, internal_np::keep_surface_voxels_tag), true);
-  settings.memory_limit = internal::memory_limit(np, caller); // checked before any work
-  settings.rasterised = choose_parameter(get_parameter(np, internal_np::voxelized_surface_output_tag),
-                                         static_cast<Voxelized_surface*>(nullptr));
+  const Voxelize_settings settings = voxelize_settings(np, "voxelize");
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, mesh));
   return voxelize_with(mesh, vpm, voxels, settings);
