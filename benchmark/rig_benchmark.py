@@ -81,7 +81,11 @@ def artist_rig(rig_path):
 
 
 def our_rig(json_path):
-    control = json.load(open(json_path))['control']
+    return rig_of_control(json.load(open(json_path))['control'])
+
+
+def rig_of_control(control):
+    """Joint positions (n x 3) and bones of skeletonize's "control" object."""
     positions = np.array([j['position'] for j in control['joints']], float).reshape(-1, 3)
     return positions, [tuple(b) for b in control['bones']]
 

@@ -37,8 +37,9 @@ import rig_benchmark as rb
 
 def our_tree(json_path):
     """Joint positions, bones, MAT radii and parents of skeletonize's control skeleton."""
-    positions, bones = rb.our_rig(json_path)
-    joints = json.load(open(json_path))['control']['joints']
+    control = json.load(open(json_path))['control']
+    positions, bones = rb.rig_of_control(control)
+    joints = control['joints']
     return positions, bones, np.array([j['radius'] for j in joints], float), [j['parent'] for j in joints]
 
 
@@ -79,6 +80,11 @@ def junction_depth(parents, adjacent, joint):
             depth += 1
         joint = parents[joint]
     return depth
+
+
+def leading_count(flags):
+    """How many of `flags` are true before the first false one."""
+    return int(np.argmin(np.append(np.asarray(flags, bool), False)))
 
 
 def without(positions, bones, dropped):
@@ -139,7 +145,7 @@ def main(argv):
     rules['drop end chains 3+ junctions deep'] = lambda chain: chain['path'] if chain['depth'] >= 3 else []
     for t in (0.1, 0.12, 0.15, 0.2):
         rules['trim tip joints of radius < %.2f R' % t] = (
-            lambda chain, t=t: chain['path'][:np.argmax(np.append(chain['radii'] >= t * chain['largest_radius'], True))])
+            lambda chain, t=t: chain['path'][:leading_count(chain['radii'] < t * chain['largest_radius'])])
     rules['bound: extra chains dropped'] = lambda chain: chain['path'] if chain['extra'] else []
     rules['bound: end chains trimmed'] = lambda chain: chain['path'][:chain['far_tip_joints']]
 
@@ -170,7 +176,7 @@ def main(argv):
             chains.append({
                 'path': path, 'radii': radii[path], 'mean_radius': radii[path].mean(),
                 'largest_radius': radii.max(), 'depth': junction_depth(parents, adjacent, junction),
-                'extra': bool(far.all()), 'far_tip_joints': int(np.argmin(np.append(far, False))),
+                'extra': bool(far.all()), 'far_tip_joints': leading_count(far),
                 'length': np.linalg.norm(np.diff(points, axis=0), axis=1).sum()})
         on_extra = np.zeros(len(positions), bool)
         for chain in chains:
