@@ -74,6 +74,7 @@ struct Options
   double small_piece_fraction = ranges::small_piece_fraction.default_value;
   double spur_length_factor = ranges::spur_length_factor.default_value;
   double limb_protrusion_factor = ranges::limb_protrusion_factor.default_value;
+  double sheet_lobe_reach_factor = ranges::sheet_lobe_reach_factor.default_value;
   int level_of_detail_resolution = int(ranges::level_of_detail_resolution.default_value);
   std::optional<int> smoothing_window; // none: the library's default for the resolution
   std::optional<double> thin_part_radius; // none: the library's default for the resolution
@@ -116,6 +117,8 @@ const Numeric_option numeric_options[] = {
     {"--spur-length", "F", ranges::spur_length_factor, "snip end branches shorter than F MAT radii"},
     {"--limb-protrusion", "F", ranges::limb_protrusion_factor,
      "level of detail: snip end branches reaching less than F largest MAT radii out of their junction"},
+    {"--sheet-lobe-reach", "F", ranges::sheet_lobe_reach_factor,
+     "a branch into each lobe of a thick plate reaching F largest MAT radii out of the thinned skeleton's balls (0: none)"},
     {"--level-of-detail-resolution", "N", ranges::level_of_detail_resolution,
      "level of detail: the skeleton's branches are decided at N; a finer resolution routes them on its grid (0: off)"},
     {"--smoothing-window", "W", ranges::smoothing_window, "points averaged along branches",
@@ -265,6 +268,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--thin-part-radius") o.thin_part_radius = parse_number<double>(a, value());
     else if(a == "--spur-length") o.spur_length_factor = parse_number<double>(a, value());
     else if(a == "--limb-protrusion") o.limb_protrusion_factor = parse_number<double>(a, value());
+    else if(a == "--sheet-lobe-reach") o.sheet_lobe_reach_factor = parse_number<double>(a, value());
     else if(a == "--level-of-detail-resolution") o.level_of_detail_resolution = parse_number<int>(a, value());
     else if(a == "--smoothing-window") o.smoothing_window = parse_number<int>(a, value());
     else if(a == "--bend-threshold") o.bend_threshold = parse_number<double>(a, value());
@@ -588,6 +592,7 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
         params::thin_part_radius(o.thin_part_radius.value_or(gs::default_thin_part_radius(o.resolution))),
         params::spur_length_factor(o.spur_length_factor),
         params::limb_protrusion_factor(o.limb_protrusion_factor),
+        params::sheet_lobe_reach_factor(o.sheet_lobe_reach_factor),
         params::level_of_detail_resolution(o.level_of_detail_resolution),
         params::smoothing_window(o.smoothing_window.value_or(gs::default_smoothing_window(o.resolution))),
         params::bend_threshold(o.bend_threshold), params::straightness_tolerance(o.straightness_tolerance),
@@ -636,6 +641,9 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
                    {"voxels_joining_pieces", report.voxels_joining_pieces},
                    {"small_pieces_removed", report.small_pieces.removed_pieces}}},
         {"thinned", stage_json(report.thinned)},
+        {"sheet_lobes", {{"sheet_voxels", report.sheet_lobes.sheet_voxels},
+                         {"lobes_reached", report.sheet_lobes.lobes_reached},
+                         {"voxels_added", report.sheet_lobes.voxels_added}}},
         {"spurious_cycles", {{"cut", report.spurious_cycles_cut}}},
         {"pruned", stage_json(report.pruned)},
         {"routed", {{"branches_along_level_of_detail", report.branches_along_level_of_detail}}},
@@ -663,6 +671,7 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
                         {"thin_part_radius", report.thin_part_radius},
                         {"spur_length_factor", o.spur_length_factor},
                         {"limb_protrusion_factor", o.limb_protrusion_factor},
+                        {"sheet_lobe_reach_factor", o.sheet_lobe_reach_factor},
                         {"level_of_detail_resolution", o.level_of_detail_resolution},
                         {"smoothing_window", report.smoothing_window},
                         {"bend_threshold", o.bend_threshold},

@@ -449,6 +449,44 @@ BOOST_AUTO_TEST_CASE(a_cape_made_of_one_sheet_gets_one_chain_down_its_middle)
   }
 }
 
+// A thick plate tapering to its rim (a plush starfish, a cushion, a flat body with stubby
+// limbs; 4286 and 10467 of the artists' val split) thins from its rim inwards to a point or
+// to stubs: reach_sheet_lobes() gives each arm a chain to near its tip (the val split had
+// two characters with fewer than 4 joints; none since).
+BOOST_AUTO_TEST_CASE(each_arm_of_a_thick_starfish_gets_a_chain)
+{
+  const int arms = 5;
+  const double turn = 0.3;
+  const Mesh mesh = test::mesh_of<Mesh>(test::thick_starfish(arms, turn));
+  Control without;
+  const gs::Control_skeleton_report before =
+      gs::extract_control_skeleton(mesh, without, params::sheet_lobe_reach_factor(0));
+  BOOST_TEST(before.sheet_lobes.lobes_reached == 0u);
+  for(const auto& j : test::joints(without)) // the premise: thinning alone burns the arms to stubs
+    BOOST_TEST(std::hypot(j.point.x(), j.point.y()) < 0.2);
+  for(int resolution : {64, 96, 128}) // above 64, the grid of the level of detail decides
+  {
+    BOOST_TEST_CONTEXT("resolution " << resolution)
+    {
+      Control control;
+      const gs::Control_skeleton_report r = gs::extract_control_skeleton(mesh, control, params::resolution(resolution));
+      BOOST_TEST(r.sheet_lobes.lobes_reached == std::size_t(arms));
+      std::vector<int> ends_per_arm(arms, 0);
+      for(const auto& j : test::joints(control))
+        if(j.kind == gs::Joint_kind::end)
+        {
+          const double angle = std::atan2(j.point.y(), j.point.x()) - turn;
+          const int arm = int(std::lround(angle * arms / (2 * test::pi) + arms)) % arms;
+          BOOST_TEST(std::abs(std::remainder(angle - arm * 2 * test::pi / arms, 2 * test::pi)) < test::pi / arms / 2);
+          BOOST_TEST(std::hypot(j.point.x(), j.point.y()) > 0.3); // the arms reach 0.5 out, the notches 0.1
+          ++ends_per_arm[std::size_t(arm)];
+        }
+      for(int arm = 0; arm < arms; ++arm)
+        BOOST_TEST(ends_per_arm[std::size_t(arm)] == 1, "arm " << arm);
+    }
+  }
+}
+
 BOOST_AUTO_TEST_CASE(remove_small_pieces_removes_exactly_the_small_ones)
 {
   // Three balls of radius 1, 0.5 and 0.2: at fraction 0.05 only the smallest (0.8 % of the

@@ -4,6 +4,7 @@
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/internal/thin/simple_point.h>
+#include <CGAL/Geodesic_skeleton/reach_sheet_lobes.h>
 #include <CGAL/Geodesic_skeleton/thin.h>
 
 #include <Geodesic_skeleton_test/voxel_skeleton.h>
@@ -532,6 +533,92 @@ BOOST_AUTO_TEST_CASE(the_sheet_radii_cost_memory_only_when_asked_for)
                                                      gs::parameters::slanted_sheet_radius_map(
                                                          boost::associative_property_map<gs::Sheet_radii>(radii)))),
                     std::length_error);
+}
+
+// reach_sheet_lobes(): a thick plate tapering to its rim thins from the rim inwards, level by
+// level, to a point or to stubs; each of its arms then gets a path from its far end to them.
+namespace {
+
+// A thick starfish of `arms` arms, lens-shaped: its outline runs from 7 to 36 voxels from
+// the centre, its half thickness falls linearly from 10 voxels at the centre to 0 at the rim.
+bool in_starfish(int arms, double turn, int x, int y, int z)
+{
+  const double rho = std::hypot(double(x), double(y)), angle = std::atan2(double(y), double(x)) - turn;
+  const double rim = 36. * (0.6 + 0.4 * std::cos(arms * angle));
+  return rho < rim && std::abs(z) <= 10. * (1. - rho / rim);
+}
+
+// The end points (one 26-neighbour) of a voxel set.
+template <typename VoxelSet>
+std::vector<gs::Voxel_key> end_points(const VoxelSet& s)
+{
+  std::vector<gs::Voxel_key> ends;
+  s.for_each([&](const gs::Voxel_key& k) {
+    if(gs::internal::bit_count(configuration(s, k)) == 1)
+      ends.push_back(k);
+  });
+  return ends;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(reach_sheet_lobes_gives_each_arm_of_a_thick_starfish_a_branch, VoxelSet,
+                              Voxel_set_models)
+{
+  const int arms = 5;
+  const double turn = 0.3; // no arm along a grid axis
+  const gs::Voxel_box box{gs::Voxel_key{-40, -40, -12}, gs::Voxel_key{41, 41, 13}};
+  VoxelSet s = voxels_where<VoxelSet>(box, [&](int x, int y, int z) { return in_starfish(arms, turn, x, y, z); });
+  const gs::Voxel_distance_field distances = gs::distance_transform(s);
+  gs::thin(s, distances);
+  for(const gs::Voxel_key& e : end_points(s)) // the premise: thinning burns the arms to stubs
+    BOOST_TEST(std::hypot(double(e.x), double(e.y)) < 20.); // the arms reach 36 out
+  VoxelSet unchanged = s;
+  BOOST_TEST(gs::reach_sheet_lobes(unchanged, distances, gs::parameters::sheet_lobe_reach_factor(0)).lobes_reached == 0u);
+  BOOST_TEST(unchanged.size() == s.size());
+
+  const gs::Sheet_lobes_report report = gs::reach_sheet_lobes(s, distances);
+  BOOST_TEST(report.lobes_reached == std::size_t(arms));
+  BOOST_TEST(report.voxels_added > 0u);
+  BOOST_TEST(test::components_26(s) == 1);
+  // One end per arm, at least two thirds of the way out along it.
+  std::vector<int> ends_per_arm(arms, 0);
+  for(const gs::Voxel_key& e : end_points(s))
+  {
+    const double angle = std::atan2(double(e.y), double(e.x)) - turn;
+    const int arm = int(std::lround(angle * arms / (2 * test::pi) + arms)) % arms;
+    const double off_axis = std::remainder(angle - arm * 2 * test::pi / arms, 2 * test::pi);
+    BOOST_TEST(std::abs(off_axis) < test::pi / arms / 2);
+    BOOST_TEST(std::hypot(double(e.x), double(e.y)) > 24.);
+    ++ends_per_arm[std::size_t(arm)];
+  }
+  for(int arm = 0; arm < arms; ++arm)
+    BOOST_TEST(ends_per_arm[std::size_t(arm)] == 1, "arm " << arm);
+}
+
+BOOST_AUTO_TEST_CASE(reach_sheet_lobes_leaves_a_limb_and_a_wing_alone)
+{
+  // A bar's skeleton, its axis, holds its whole medial sheet in its balls; a thin sheet (a
+  // wing, two voxels thick) is not searched: thinning keeps its middle curve already.
+  const gs::Voxel_box box{gs::Voxel_key{0, -7, -7}, gs::Voxel_key{60, 31, 8}};
+  gs::Dense_voxel_grid s = voxels_where<gs::Dense_voxel_grid>(
+      box, [](int x, int y, int z) { return y * y + z * z <= 36 || (x >= 20 && x < 40 && y >= 0 && y < 30 && z >= 0 && z < 2); });
+  const gs::Voxel_distance_field distances = gs::distance_transform(s);
+  gs::thin(s, distances);
+  const std::size_t thinned = s.size();
+  const gs::Sheet_lobes_report report = gs::reach_sheet_lobes(s, distances);
+  BOOST_TEST(report.lobes_reached == 0u);
+  BOOST_TEST(s.size() == thinned);
+}
+
+BOOST_AUTO_TEST_CASE(reach_sheet_lobes_refuses_a_factor_out_of_range)
+{
+  const gs::Voxel_box box{gs::Voxel_key{-9, -9, -9}, gs::Voxel_key{10, 10, 10}};
+  gs::Dense_voxel_grid s = voxels_where<gs::Dense_voxel_grid>(box, [](int x, int y, int z) { return x * x + y * y + z * z <= 64; });
+  const gs::Voxel_distance_field distances = gs::distance_transform(s);
+  for(double bad : {-1., 101., std::nan("")})
+    BOOST_CHECK_THROW(gs::reach_sheet_lobes(s, distances, gs::parameters::sheet_lobe_reach_factor(bad)), std::invalid_argument);
+  BOOST_CHECK_THROW(gs::reach_sheet_lobes(s, distances, gs::parameters::thin_part_radius(-1.)), std::invalid_argument);
 }
 
 BOOST_AUTO_TEST_CASE(an_empty_set_is_an_error)

@@ -10,6 +10,7 @@
 #include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/prune_skeleton.h>
+#include <CGAL/Geodesic_skeleton/reach_sheet_lobes.h>
 #include <CGAL/Geodesic_skeleton/remove_small_pieces.h>
 #include <CGAL/Geodesic_skeleton/thin.h>
 #include <CGAL/Geodesic_skeleton/to_graph.h>
@@ -55,7 +56,8 @@ using Skeleton = gs::Curve_skeleton<Kernel::Point_3, Mesh::Vertex_index>;
 struct Stage_outputs
 {
   std::size_t solid_size = 0, thinned_away = 0, cut_away = 0;
-  std::set<gs::Voxel_key> solid, thinned, pruned;
+  std::set<gs::Voxel_key> solid, thinned, reached, pruned;
+  std::array<std::size_t, 3> lobes{};
   std::vector<std::uint32_t> squared_distances;
   std::array<std::size_t, 3> small_pieces{};
   std::array<std::size_t, 5> pruning{}, classes{};
@@ -75,6 +77,9 @@ Stage_outputs run_voxel_stages(const Mesh& mesh, AsField as_field)
   out.squared_distances = field.values();
   out.thinned_away = gs::thin(voxels, field);
   out.thinned = test::keys_of(voxels);
+  const gs::Sheet_lobes_report lobes = gs::reach_sheet_lobes(voxels, field);
+  out.lobes = {lobes.sheet_voxels, lobes.lobes_reached, lobes.voxels_added};
+  out.reached = test::keys_of(voxels);
   const gs::Small_pieces_report pieces = gs::remove_small_pieces(voxels, field);
   out.small_pieces = {pieces.pieces, pieces.removed_pieces, pieces.removed_voxels};
   out.cut_away = gs::cut_spurious_cycles(voxels, mesh);
@@ -115,6 +120,8 @@ BOOST_AUTO_TEST_CASE(every_voxel_stage_runs_on_the_concept_archetypes_as_on_a_sp
   BOOST_TEST((archetype.squared_distances == sparse.squared_distances));
   BOOST_TEST(archetype.thinned_away == sparse.thinned_away);
   BOOST_TEST((archetype.thinned == sparse.thinned));
+  BOOST_TEST((archetype.lobes == sparse.lobes));
+  BOOST_TEST((archetype.reached == sparse.reached));
   BOOST_TEST((archetype.small_pieces == sparse.small_pieces));
   BOOST_TEST(archetype.cut_away == sparse.cut_away);
   BOOST_TEST((archetype.pruning == sparse.pruning));

@@ -9,8 +9,8 @@
 
 The concept `VoxelSet` describes a finite set of voxels placed in space: the input and
 output of the voxel stages of the package (`voxelize()`, `distance_transform()`,
-`thin()`, `remove_small_pieces()`, `cut_spurious_cycles()`, `prune_skeleton()`,
-`classify_skeleton_points()`, `to_graph()`). Every voxel algorithm of the package is
+`thin()`, `reach_sheet_lobes()`, `remove_small_pieces()`, `cut_spurious_cycles()`,
+`prune_skeleton()`, `classify_skeleton_points()`, `to_graph()`). Every voxel algorithm of the package is
 written against this concept only, so it runs on a dense grid and on a sparse set alike
 (the package's tests instantiate every stage with an archetype that has the members below
 and nothing more).
@@ -20,7 +20,9 @@ sweep a whole box copy the set into a dense array over its `bounding_box()`, wha
 model: `distance_transform()` (the field's array), `thin()` (one byte per voxel of the box
 grown by two), `cut_spurious_cycles()` and `to_graph()` (an index per voxel of the box);
 `voxelize()` computes the solid in dense arrays over the grid's box and inserts it into
-the set voxel by voxel. A sparse model therefore saves memory between the stages, not in
+the set voxel by voxel. `reach_sheet_lobes()` reads the skeleton through `for_each()`, `contains()` and
+`size()`, keeps labels in dense arrays over the distance field's box, and inserts the
+voxels of its paths. A sparse model therefore saves memory between the stages, not in
 them. `remove_small_pieces()`, `prune_skeleton()` and `classify_skeleton_points()` read
 the set through `for_each()` and `contains()` only.
 

@@ -34,6 +34,7 @@
 #include <CGAL/Geodesic_skeleton/Skeleton_radius_in_voxels_map.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/thin.h>
+#include <CGAL/Geodesic_skeleton/reach_sheet_lobes.h>
 #include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>
 
 // Pruning (Algorithm 1) and the curve skeleton.

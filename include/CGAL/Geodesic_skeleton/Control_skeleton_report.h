@@ -8,6 +8,7 @@
 /// What `extract_control_skeleton()` did, and the visitor it reports its stages to.
 
 #include <CGAL/Geodesic_skeleton/prune_skeleton.h>
+#include <CGAL/Geodesic_skeleton/reach_sheet_lobes.h>
 #include <CGAL/Geodesic_skeleton/remove_small_pieces.h>
 #include <CGAL/Geodesic_skeleton/skeleton_statistics.h>
 
@@ -29,6 +30,7 @@ struct Control_skeleton_report
   std::size_t voxels_joining_pieces = 0; ///< voxels added to the finer grid's solid along the skeleton of the level of detail (`add_skeleton_to_solid()`)
   Small_pieces_report small_pieces; ///< the skeleton's pieces, and the small detached ones removed
   Skeleton_statistics thinned;     ///< the curve skeleton after thinning
+  Sheet_lobes_report sheet_lobes;  ///< the paths into the lobes of thick plates (`reach_sheet_lobes()`)
   std::size_t spurious_cycles_cut = 0; ///< cycles the mesh has no handle for, opened (`cut_spurious_cycles()`)
   Skeleton_statistics pruned;      ///< after pruning (Algorithm 1 and snipping)
   Pruning_report pruning;          ///< what pruning removed
@@ -45,7 +47,7 @@ struct Control_skeleton_report
   std::size_t reeb_edges = 0;      ///< arcs of the Reeb graph, when one was asked for
   /// Wall-clock time of each stage in milliseconds, in the order they ran: "voxelize",
   /// "distance_transform", "thin", "thinned_graph" (the graph and counts of the thinned
-  /// skeleton), "remove_small_pieces", "cut_spurious_cycles", "prune" (these on the grid of
+  /// skeleton), "reach_sheet_lobes", "remove_small_pieces", "cut_spurious_cycles", "prune" (these on the grid of
   /// the level of detail), "voxelize_finer" and "distance_transform_finer" (above
   /// `level_of_detail_resolution`), "route_on_finer_grid", "to_graph", "smooth",
   /// "curve_points_inside", "split_into_bones", and "reeb_graph" when asked for.

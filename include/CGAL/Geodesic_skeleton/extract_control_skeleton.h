@@ -34,7 +34,8 @@ namespace Geodesic_skeleton {
 /// On the grid of the level of detail: `voxelize()` (the solid interior, on a grid aligned
 /// with the principal axes), `distance_transform()` (the MAT radius), `thin()` (grassfire, a
 /// one-voxel-thick curve skeleton, with the sheet radius of its voxels),
-/// `remove_small_pieces()` (loose eyes, teeth), `cut_spurious_cycles()` (loops the mesh has
+/// `reach_sheet_lobes()` (a branch into each lobe of a thick plate that thinning burnt to a
+/// point), `remove_small_pieces()` (loose eyes, teeth), `cut_spurious_cycles()` (loops the mesh has
 /// no handle for), `prune_skeleton()` (the paper's Algorithm 1 and the snipping of spurious
 /// branches, judged by the MAT radius or a thin sheet's width, and by the widest sheet of
 /// each piece, `widest_sheet_radius_of_pieces()`).
@@ -101,6 +102,14 @@ namespace Geodesic_skeleton {
 ///     \cgalParamDescription{the setting of `prune_skeleton()`: the rig's level of detail}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{0.75}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{sheet_lobe_reach_factor}
+///     \cgalParamDescription{the setting of `reach_sheet_lobes()`: how far out of the thinned
+///                           skeleton's balls a lobe of a thick plate reaches, in largest MAT
+///                           radii of its piece, for a branch into it; in [0, 100], 0 adds none}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{1 (calibrated on the artists' rigs, manual section
+///                       \ref manual_sheet_lobes)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{level_of_detail_resolution}
 ///     \cgalParamDescription{the resolution of the grid that decides which branches the rig

@@ -76,6 +76,10 @@ inline constexpr Parameter_range spur_length_factor{"spur_length_factor", 0, 100
 /// less than this many times the largest MAT radius of their piece are snipped (the rig's
 /// level of detail; 0 keeps them).
 inline constexpr Parameter_range limb_protrusion_factor{"limb_protrusion_factor", 0, 100, 0.75, false, false};
+/// `reach_sheet_lobes()`: a lobe of a thick plate's medial sheet that reaches out of the
+/// skeleton's balls by this many times the largest MAT radius of its piece gets a path into
+/// it (0: none).
+inline constexpr Parameter_range sheet_lobe_reach_factor{"sheet_lobe_reach_factor", 0, 100, 1.0, false, false};
 /// `extract_control_skeleton()`: the resolution of the grid that decides which branches the
 /// rig has; a finer grid routes them (0, or at least the resolution, turns this off).
 inline constexpr Parameter_range level_of_detail_resolution{"level_of_detail_resolution", 0, 8192, 64, true, false};

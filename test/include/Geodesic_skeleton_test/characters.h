@@ -224,6 +224,42 @@ inline Soup six_armed_star()
   return s;
 }
 
+// A thick starfish of `arms` arms, lens-shaped (a plush toy, a cushion with corners): in the
+// plane z = 0 its outline is at 0.5 (0.6 + 0.4 cos(arms (angle - turn))) from the centre, and
+// its half thickness falls linearly from 0.14 at the centre to 0 at the rim. One closed piece:
+// a top and a bottom polar grid sharing the rim.
+inline Soup thick_starfish(int arms, double turn)
+{
+  const int around = 24 * arms, rings = 16;
+  const double half_thickness = 0.14;
+  Soup s;
+  auto point = [&](int ring, int k, int side) {
+    const double angle = 2 * pi * k / around;
+    const double t = double(ring) / rings, rim = 0.5 * (0.6 + 0.4 * std::cos(arms * (angle - turn)));
+    return s.add_point(t * rim * std::cos(angle), t * rim * std::sin(angle), side * half_thickness * (1 - t));
+  };
+  const std::size_t top = point(0, 0, 1), bottom = point(0, 0, -1);
+  std::vector<std::vector<std::size_t>> upper(rings + 1), lower(rings + 1);
+  for(int ring = 1; ring <= rings; ++ring)
+    for(int k = 0; k < around; ++k)
+    {
+      upper[std::size_t(ring)].push_back(point(ring, k, 1));
+      lower[std::size_t(ring)].push_back(ring == rings ? upper[std::size_t(ring)].back() : point(ring, k, -1));
+    }
+  for(int k = 0; k < around; ++k)
+  {
+    const std::size_t a = std::size_t(k), b = std::size_t((k + 1) % around);
+    s.add_triangle(top, upper[1][a], upper[1][b]);
+    s.add_triangle(bottom, lower[1][b], lower[1][a]);
+    for(std::size_t ring = 1; ring < std::size_t(rings); ++ring)
+    {
+      s.add_quad(upper[ring][a], upper[ring + 1][a], upper[ring + 1][b], upper[ring][b]);
+      s.add_quad(lower[ring][b], lower[ring + 1][b], lower[ring + 1][a], lower[ring][a]);
+    }
+  }
+  return s;
+}
+
 } // namespace Geodesic_skeleton_test
 
 #endif // GEODESIC_SKELETON_TEST_CHARACTERS_H

@@ -73,6 +73,7 @@ struct Control_skeleton_settings
   double small_piece_fraction = 0;
   double spur_length_factor = 0;
   double limb_protrusion_factor = 0;
+  double sheet_lobe_reach_factor = 0;
   int level_of_detail_resolution = default_voxel_resolution;
   std::optional<int> smoothing_window;
   std::optional<double> smallest_radius;
@@ -114,6 +115,8 @@ Control_skeleton_settings control_skeleton_settings(const NamedParameters& np, c
                                  ranges::spur_length_factor.default_value);
   s.limb_protrusion_factor = checked(ranges::limb_protrusion_factor, internal_np::limb_protrusion_factor_tag,
                                      ranges::limb_protrusion_factor.default_value);
+  s.sheet_lobe_reach_factor = checked(ranges::sheet_lobe_reach_factor, internal_np::sheet_lobe_reach_factor_tag,
+                                      ranges::sheet_lobe_reach_factor.default_value);
   checked(ranges::thin_part_radius, internal_np::thin_part_radius_tag, ranges::thin_part_radius.default_value);
   s.thin_part_radius = given_parameter(np, internal_np::thin_part_radius_tag, double());
   checked(ranges::smoothing_window, internal_np::smoothing_window_tag,

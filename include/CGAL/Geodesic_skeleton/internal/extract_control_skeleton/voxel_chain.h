@@ -20,6 +20,7 @@
 #include <CGAL/Geodesic_skeleton/move_skeleton_inside.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 #include <CGAL/Geodesic_skeleton/prune_skeleton.h>
+#include <CGAL/Geodesic_skeleton/reach_sheet_lobes.h>
 #include <CGAL/Geodesic_skeleton/remove_small_pieces.h>
 #include <CGAL/Geodesic_skeleton/route_skeleton_on_finer_grid.h>
 #include <CGAL/Geodesic_skeleton/sheet_half_widths.h>
@@ -113,6 +114,14 @@ void extract_control_skeleton_with(
   else
     report.thinned = skeleton_statistics_of_voxels(skeleton);
   clock.finished("thinned_graph");
+
+  // A thick plate that thinning burnt to a point or a short line gets a branch into each lobe.
+  report.sheet_lobes = reach_sheet_lobes(
+      skeleton, distances,
+      parameters::combine(parameters::sheet_lobe_reach_factor(settings.sheet_lobe_reach_factor),
+                          parameters::thin_part_radius(report.thin_part_radius * pruning_resolution / report.resolution),
+                          np));
+  clock.finished("reach_sheet_lobes");
 
   report.small_pieces = remove_small_pieces(skeleton, distances, np);
   clock.finished("remove_small_pieces");
