@@ -92,12 +92,14 @@ void extract_control_skeleton_with(
   // thin at the default resolution are thin at any other (a given radius is in voxels of
   // `resolution`).
   report.thin_part_radius = settings.thin_part_radius.value_or(default_thin_part_radius(report.resolution));
+  // In voxels of the grid that thins, that of the level of detail.
+  const double thin_part_radius_of_grid = report.thin_part_radius * pruning_resolution / report.resolution;
   Sheet_radii sheet_radii, slanted_sheet_radii;
   thin(solid, distances,
        parameters::combine(
            parameters::sheet_radius_map(boost::associative_property_map<Sheet_radii>(sheet_radii)),
            parameters::slanted_sheet_radius_map(boost::associative_property_map<Sheet_radii>(slanted_sheet_radii)),
-           parameters::thin_part_radius(report.thin_part_radius * pruning_resolution / report.resolution), np));
+           parameters::thin_part_radius(thin_part_radius_of_grid), np));
   Sparse_voxel_set skeleton;
   skeleton.reset(solid.frame(), solid.bounding_box());
   solid.for_each([&](const Voxel_key& k) { skeleton.insert(k); });
@@ -119,7 +121,7 @@ void extract_control_skeleton_with(
   report.sheet_lobes = reach_sheet_lobes(
       skeleton, distances,
       parameters::combine(parameters::sheet_lobe_reach_factor(settings.sheet_lobe_reach_factor),
-                          parameters::thin_part_radius(report.thin_part_radius * pruning_resolution / report.resolution),
+                          parameters::thin_part_radius(thin_part_radius_of_grid),
                           np));
   clock.finished("reach_sheet_lobes");
 
