@@ -475,11 +475,10 @@ BOOST_AUTO_TEST_CASE(each_arm_of_a_thick_starfish_gets_a_chain)
       for(const auto& j : test::joints(control))
         if(j.kind == gs::Joint_kind::end)
         {
-          const double angle = std::atan2(j.point.y(), j.point.x()) - turn;
-          const int arm = int(std::lround(angle * arms / (2 * test::pi) + arms)) % arms;
-          BOOST_TEST(std::abs(std::remainder(angle - arm * 2 * test::pi / arms, 2 * test::pi)) < test::pi / arms / 2);
+          const test::Starfish_arm a = test::starfish_arm(arms, turn, j.point.x(), j.point.y());
+          BOOST_TEST(std::abs(a.off_axis) < test::pi / arms / 2);
           BOOST_TEST(std::hypot(j.point.x(), j.point.y()) > 0.3); // the arms reach 0.5 out, the notches 0.1
-          ++ends_per_arm[std::size_t(arm)];
+          ++ends_per_arm[std::size_t(a.arm)];
         }
       for(int arm = 0; arm < arms; ++arm)
         BOOST_TEST(ends_per_arm[std::size_t(arm)] == 1, "arm " << arm);

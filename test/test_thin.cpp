@@ -7,6 +7,7 @@
 #include <CGAL/Geodesic_skeleton/reach_sheet_lobes.h>
 #include <CGAL/Geodesic_skeleton/thin.h>
 
+#include <Geodesic_skeleton_test/characters.h>
 #include <Geodesic_skeleton_test/voxel_skeleton.h>
 
 #include <boost/mpl/list.hpp>
@@ -543,8 +544,8 @@ namespace {
 // the centre, its half thickness falls linearly from 10 voxels at the centre to 0 at the rim.
 bool in_starfish(int arms, double turn, int x, int y, int z)
 {
-  const double rho = std::hypot(double(x), double(y)), angle = std::atan2(double(y), double(x)) - turn;
-  const double rim = 36. * (0.6 + 0.4 * std::cos(arms * angle));
+  const double rho = std::hypot(double(x), double(y));
+  const double rim = 36. * test::starfish_rim(arms, turn, std::atan2(double(y), double(x)));
   return rho < rim && std::abs(z) <= 10. * (1. - rho / rim);
 }
 
@@ -585,12 +586,10 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(reach_sheet_lobes_gives_each_arm_of_a_thick_starfi
   std::vector<int> ends_per_arm(arms, 0);
   for(const gs::Voxel_key& e : end_points(s))
   {
-    const double angle = std::atan2(double(e.y), double(e.x)) - turn;
-    const int arm = int(std::lround(angle * arms / (2 * test::pi) + arms)) % arms;
-    const double off_axis = std::remainder(angle - arm * 2 * test::pi / arms, 2 * test::pi);
-    BOOST_TEST(std::abs(off_axis) < test::pi / arms / 2);
+    const test::Starfish_arm a = test::starfish_arm(arms, turn, double(e.x), double(e.y));
+    BOOST_TEST(std::abs(a.off_axis) < test::pi / arms / 2);
     BOOST_TEST(std::hypot(double(e.x), double(e.y)) > 24.);
-    ++ends_per_arm[std::size_t(arm)];
+    ++ends_per_arm[std::size_t(a.arm)];
   }
   for(int arm = 0; arm < arms; ++arm)
     BOOST_TEST(ends_per_arm[std::size_t(arm)] == 1, "arm " << arm);

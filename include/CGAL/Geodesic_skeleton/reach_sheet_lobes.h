@@ -120,11 +120,14 @@ Sheet_lobes_report reach_sheet_lobes(VoxelSet& skeleton, const VoxelDistanceFiel
   if(reach_factor == 0 || skeleton.size() == 0)
     return report;
   const internal::Grid_layout layout(distances.box());
+  // The ridge test reads the distances up to ridge_reach_in_steps beyond the box.
+  const internal::Grid_layout padded(distances.box().grown(int(internal::ridge_reach_in_steps)));
   // Per box voxel: its label and piece (4 bytes each), and a path search's cost and
-  // predecessor (12).
-  internal::require_memory(20. * double(layout.volume()), internal::memory_limit(np), layout, caller,
-                           "searching the medial sheet");
-  internal::Sheet_lobe_search<VoxelDistanceField> search(distances, layout, internal::thin_part_d2(thin_part_radius));
+  // predecessor (12); per voxel of the padded box, its squared distance (4).
+  internal::require_memory(20. * double(layout.volume()) + 4. * double(padded.volume()), internal::memory_limit(np),
+                           padded, caller, "searching the medial sheet");
+  internal::Sheet_lobe_search<VoxelDistanceField> search(distances, layout, padded,
+                                                         internal::thin_part_d2(thin_part_radius));
   search.run(skeleton, reach_factor, report.sheet_voxels, report.lobes_reached, report.voxels_added);
   return report;
 }

@@ -224,6 +224,27 @@ inline Soup six_armed_star()
   return s;
 }
 
+// The outline of a starfish of `arms` arms turned by `turn`: its distance from the centre in
+// the direction `angle`, in lengths of its arms (0.2 in the notches, 1 at the arms' ends).
+inline double starfish_rim(int arms, double turn, double angle)
+{
+  return 0.6 + 0.4 * std::cos(arms * (angle - turn));
+}
+
+// The arm of that starfish nearest to the direction of (x, y) from its centre, and the angle
+// from the arm's axis to that direction.
+struct Starfish_arm
+{
+  int arm;
+  double off_axis;
+};
+inline Starfish_arm starfish_arm(int arms, double turn, double x, double y)
+{
+  const double angle = std::atan2(y, x) - turn;
+  const int arm = int(std::lround(angle * arms / (2 * pi) + arms)) % arms;
+  return {arm, std::remainder(angle - arm * 2 * pi / arms, 2 * pi)};
+}
+
 // A thick starfish of `arms` arms, lens-shaped (a plush toy, a cushion with corners): in the
 // plane z = 0 its outline is at 0.5 (0.6 + 0.4 cos(arms (angle - turn))) from the centre, and
 // its half thickness falls linearly from 0.14 at the centre to 0 at the rim. One closed piece:
@@ -235,7 +256,7 @@ inline Soup thick_starfish(int arms, double turn)
   Soup s;
   auto point = [&](int ring, int k, int side) {
     const double angle = 2 * pi * k / around;
-    const double t = double(ring) / rings, rim = 0.5 * (0.6 + 0.4 * std::cos(arms * (angle - turn)));
+    const double t = double(ring) / rings, rim = 0.5 * starfish_rim(arms, turn, angle);
     return s.add_point(t * rim * std::cos(angle), t * rim * std::sin(angle), side * half_thickness * (1 - t));
   };
   const std::size_t top = point(0, 0, 1), bottom = point(0, 0, -1);

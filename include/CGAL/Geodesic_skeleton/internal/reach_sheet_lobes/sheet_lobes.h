@@ -35,15 +35,13 @@ template <typename VoxelDistanceField>
 class Sheet_lobe_search
 {
 public:
-  Sheet_lobe_search(const VoxelDistanceField& distances, const Grid_layout& layout, std::uint32_t largest_thin_d2)
-      : m_distances(distances), m_layout(layout), m_largest_thin_d2(largest_thin_d2),
-        m_label(layout.volume(), unvisited), m_offsets(layout.neighbour_offsets())
+  // `layout` is that of the field's box, `padded` the same box grown by ridge_reach_in_steps.
+  Sheet_lobe_search(const VoxelDistanceField& distances, const Grid_layout& layout, const Grid_layout& padded,
+                    std::uint32_t largest_thin_d2)
+      : m_distances(distances), m_layout(layout), m_padded(padded), m_largest_thin_d2(largest_thin_d2),
+        m_label(layout.volume(), unvisited), m_padded_d2(distances_over(distances, padded)),
+        m_padded_offsets(padded.neighbour_offsets()), m_step_lengths(neighbour_step_lengths())
   {
-    for(std::size_t b = 0; b < 26; ++b)
-    {
-      const Voxel_key& o = neighbourhood_26()[b];
-      m_offset_length[b] = std::sqrt(double(o.x * o.x + o.y * o.y + o.z * o.z));
-    }
   }
 
   template <typename VoxelSet>
@@ -132,30 +130,12 @@ private:
       r = (std::max)(r, 1.);
   }
 
-  // Whether voxel k (of squared distance d2 > 0) is a centre of maximal ball as thinning
-  // judges a curve's end: no voxel one or two steps away along the 26 directions has a
-  // radius larger by tip_growth_when_choosing per unit step.
-  bool centre_of_maximal_ball(const Voxel_key& k, std::uint32_t d2) const
+  // Whether voxel k of the field's box is a centre of maximal ball as thinning judges a
+  // curve's end (the thinning's own test, at tip_growth_when_choosing).
+  bool on_medial_sheet(const Voxel_key& k) const
   {
-    const double r = std::sqrt(double(d2));
-    const Voxel_box& box = m_layout.box;
-    const int reach = int(ridge_reach_in_steps);
-    const bool inner = k.x - reach >= box.min.x && k.y - reach >= box.min.y && k.z - reach >= box.min.z &&
-                       k.x + reach < box.max.x && k.y + reach < box.max.y && k.z + reach < box.max.z;
-    const std::uint32_t* values = m_distances.values().data();
-    const std::ptrdiff_t at = std::ptrdiff_t(m_layout.index(k));
-    const auto& neighbours = neighbourhood_26();
-    for(std::size_t b = 0; b < 26; ++b)
-      for(int step = 1; step <= reach; ++step)
-      {
-        const Voxel_key& o = neighbours[b];
-        const std::uint32_t dq =
-            inner ? values[at + step * m_offsets[b]]
-                  : m_distances.squared_distance(Voxel_key{k.x + step * o.x, k.y + step * o.y, k.z + step * o.z});
-        if(dq > d2 && std::sqrt(double(dq)) - r >= tip_growth_when_choosing * double(step) * m_offset_length[b])
-          return false;
-      }
-    return true;
+    return centre_of_maximal_ball(m_padded_d2.data(), m_padded.index(k), m_padded_offsets, m_step_lengths,
+                                  tip_growth_when_choosing);
   }
 
   // The thick medial sheet joined to the skeleton (26-adjacency, breadth first from the
@@ -181,7 +161,7 @@ private:
         if(m_label[j] != unvisited)
           continue;
         const std::uint32_t d2 = m_distances.squared_distance(n);
-        if(d2 <= m_largest_thin_d2 || !centre_of_maximal_ball(n, d2))
+        if(d2 <= m_largest_thin_d2 || !on_medial_sheet(n))
         {
           m_label[j] = not_sheet;
           continue;
@@ -296,6 +276,7 @@ private:
 
   const VoxelDistanceField& m_distances;
   const Grid_layout& m_layout;
+  const Grid_layout& m_padded;
   std::uint32_t m_largest_thin_d2;
   std::vector<std::int32_t> m_label;       // by box voxel: unvisited, not_sheet, skeleton_label, or 0 (sheet)
   std::vector<std::int32_t> m_sheet_piece; // by box voxel: the skeleton piece a sheet voxel grew from
@@ -303,8 +284,9 @@ private:
   std::vector<Voxel_key> m_skeleton;
   std::vector<double> m_skeleton_radius;
   std::vector<double> m_largest_radius; // by skeleton piece, at least 1
-  std::array<std::ptrdiff_t, 26> m_offsets;
-  std::array<double, 26> m_offset_length{};
+  std::vector<std::uint32_t> m_padded_d2; // the squared distances over the padded box
+  std::array<std::ptrdiff_t, 26> m_padded_offsets;
+  std::array<double, 26> m_step_lengths;
   std::vector<double> m_cost;
   std::vector<std::uint32_t> m_previous;
 };

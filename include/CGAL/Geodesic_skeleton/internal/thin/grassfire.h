@@ -47,6 +47,39 @@ constexpr std::ptrdiff_t ridge_reach_in_steps = 2;
 // the layers of a thicker part.
 constexpr double stair_step_depth = 0.5;
 
+// The lengths of the steps to the 26 neighbours (1, sqrt 2, sqrt 3), in the order of
+// neighbourhood_26().
+inline std::array<double, 26> neighbour_step_lengths()
+{
+  std::array<double, 26> lengths{};
+  const auto& n = neighbourhood_26();
+  for(std::size_t b = 0; b < 26; ++b)
+    lengths[b] = std::sqrt(double(offset_order(n[b])));
+  return lengths;
+}
+
+// Whether the medial ball of voxel i (squared distances `d2` over a layout whose neighbour
+// offsets are `offsets` and whose box reaches ridge_reach_in_steps beyond i) is not
+// swallowed by a neighbour's: no voxel q one or two steps away along the 26 directions (two
+// steps smooth the discrete radii) has r(q) >= r(i) + growth |q - i| (a centre of maximal
+// ball, up to the discreteness of the distance field). Along the bisector of a right-angled
+// edge the radius grows by 0.71 per unit step, so at growth 0.6 the medial sheets of edges
+// and of blunt ends (wider than 2 x 37 degrees) are swallowed; tips tapering at up to 37
+// degrees are not.
+inline bool centre_of_maximal_ball(const std::uint32_t* d2, std::size_t i, const std::array<std::ptrdiff_t, 26>& offsets,
+                                   const std::array<double, 26>& step_lengths, double growth)
+{
+  const double r = std::sqrt(double(d2[i]));
+  for(std::size_t b = 0; b < 26; ++b)
+    for(std::ptrdiff_t step = 1; step <= ridge_reach_in_steps; ++step)
+    {
+      const std::uint32_t dq = d2[std::size_t(std::ptrdiff_t(i) + step * offsets[b])];
+      if(dq > d2[i] && std::sqrt(double(dq)) - r >= growth * double(step) * step_lengths[b])
+        return false;
+    }
+  return true;
+}
+
 // The largest squared distance of a voxel in a thin part of MAT radius up to `radius`
 // voxels (`thin()`'s thin_part_radius; sqrt(2) gives 2, a part about two voxels thick).
 inline std::uint32_t thin_part_d2(double radius)
@@ -113,14 +146,11 @@ public:
             std::uint32_t largest_thin_d2, bool record_rounds)
     : m_layout(layout), m_state(std::move(state)), m_d2(d2),
       m_offsets(layout.neighbour_offsets()), m_largest_thin_d2(largest_thin_d2),
-      m_test(Simple_point_test::instance()),
+      m_offset_length(neighbour_step_lengths()), m_test(Simple_point_test::instance()),
       m_round_deleted(record_rounds ? m_state.size() : 0, 0)
   {
     for(int row = 0; row < 9; ++row) // from (x - 1, y + dy, z + dz), dy = row % 3 - 1, dz = row / 3 - 1
       m_row_offsets[row] = (row % 3 - 1) * layout.stride_y + (row / 3 - 1) * layout.stride_z - 1;
-    const auto& n = neighbourhood_26();
-    for(int b = 0; b < 26; ++b)
-      m_offset_length[b] = std::sqrt(double(offset_order(n[b])));
   }
 
   // Deletes simple points by increasing distance; returns the number deleted. A level is
@@ -363,25 +393,13 @@ public:
   }
   bool is_end_point(std::size_t i) const { return bit_count(configuration(i)) == 1; }
 
-  // Whether the medial ball of i is not swallowed by a neighbour's: no voxel q one or two
-  // steps away along the 26 directions (two steps smooth the discrete radii) has
-  // r(q) >= r(i) + growth |q - i| (a centre of maximal ball, up to the discreteness
-  // of the distance field). Ends of curves are kept only there, so that a branch ends
-  // where the shape's end is rounded (about a radius from the tip) and the erosion does not
-  // leave hairs behind. Along the bisector of a right-angled edge the radius grows by
-  // 0.71 per unit step, so the medial sheets of edges and of blunt ends (wider than
-  // 2 x 37 degrees) burn away; tips tapering at up to 37 degrees keep their branch.
+  // Whether the medial ball of i is not swallowed by a neighbour's (centre_of_maximal_ball()).
+  // Ends of curves are kept only there, so that a branch ends where the shape's end is
+  // rounded (about a radius from the tip) and the erosion does not leave hairs behind; the
+  // medial sheets of edges and blunt ends burn away.
   bool on_ridge(std::size_t i, double growth) const
   {
-    const double r = std::sqrt(double(m_d2[i]));
-    for(int b = 0; b < 26; ++b)
-      for(std::ptrdiff_t step = 1; step <= ridge_reach_in_steps; ++step)
-      {
-        const std::uint32_t dq = m_d2[std::size_t(std::ptrdiff_t(i) + step * m_offsets[b])];
-        if(dq > m_d2[i] && std::sqrt(double(dq)) - r >= growth * double(step) * m_offset_length[b])
-          return false;
-      }
-    return true;
+    return centre_of_maximal_ball(m_d2, i, m_offsets, m_offset_length, growth);
   }
 
 private:
