@@ -3,7 +3,8 @@
 //
 // voxel_medial_axis_example: the voxel stages one by one, as a user who wants the
 // intermediate products calls them: solid voxelization, distance transform (the MAT
-// radius), grassfire thinning, the paper's pruning (Algorithm 1), and the curve-skeleton
+// radius), grassfire thinning, the paths into the lobes of thick plates, the paper's
+// pruning (Algorithm 1), and the curve-skeleton
 // graph with the mesh vertices mapped to it. Pruning judges each piece's twigs against its
 // widest sheet, and on a grid finer than the default one, the end points of the skeleton on
 // the default grid guide it, as in extract_control_skeleton().
@@ -20,6 +21,7 @@
 #include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/prune_skeleton.h>
+#include <CGAL/Geodesic_skeleton/reach_sheet_lobes.h>
 #include <CGAL/Geodesic_skeleton/sheet_half_widths.h>
 #include <CGAL/Geodesic_skeleton/skeleton_statistics.h>
 #include <CGAL/Geodesic_skeleton/thin.h>
@@ -88,13 +90,17 @@ int main(int argc, char* argv[])
     solid.for_each([&](const GS::Voxel_key& k) { skeleton.insert(k); });
     const GS::Skeleton_point_counts thinned = GS::count_skeleton_points(skeleton);
 
-    // 4. The loops that parts closer than a voxel made, which the mesh has no handle for.
+    // 4. A thick plate that thinning burnt to a point or stubs (a starfish, a cushion) gets a
+    //    path into each lobe of its medial sheet that the skeleton's balls leave out.
+    const GS::Sheet_lobes_report lobes = GS::reach_sheet_lobes(skeleton, distances);
+
+    // 5. The loops that parts closer than a voxel made, which the mesh has no handle for.
     const std::size_t cut = GS::cut_spurious_cycles(skeleton, mesh);
 
-    // 5. Each piece's twigs are judged against its widest sheet, read across close levels.
+    // 6. Each piece's twigs are judged against its widest sheet, read across close levels.
     const GS::Sheet_radii widest_sheet = GS::widest_sheet_radius_of_pieces(skeleton, slanted_sheet_radii);
 
-    // 6. The paper's pruning; twigs are snipped by the MAT radius (in voxels), or in a
+    // 7. The paper's pruning; twigs are snipped by the MAT radius (in voxels), or in a
     //    thin sheet by its half width, and so are the branches inside the MAT balls of
     //    the rest of the skeleton.
     const GS::Pruning_report pruning = GS::prune_skeleton(
@@ -102,7 +108,7 @@ int main(int argc, char* argv[])
                                           GS::parameters::sheet_radius_map(GS::sheet_radius_in_voxels_map(sheet_radii)),
                                           GS::parameters::piece_radius_map(GS::sheet_radius_in_voxels_map(widest_sheet))));
 
-    // 7. On a finer grid, the same branches routed through the middle of its solid, which
+    // 8. On a finer grid, the same branches routed through the middle of its solid, which
     //    keeps the links of the pruned skeleton where the finer grid separates parts.
     std::size_t along_coarser = 0;
     if(resolution > pruning_resolution)
@@ -119,7 +125,7 @@ int main(int argc, char* argv[])
       distances = std::move(fine_distances);
     }
 
-    // 8. The curve skeleton graph: points in the mesh's coordinates, radii, mesh vertices.
+    // 9. The curve skeleton graph: points in the mesh's coordinates, radii, mesh vertices.
     GS::Curve_skeleton<Point, vertex_descriptor> curve;
     GS::to_graph(skeleton, distances, mesh, curve);
     const GS::Skeleton_statistics shape = GS::skeleton_statistics(curve);
@@ -129,6 +135,7 @@ int main(int argc, char* argv[])
               << distances.frame().voxel_size() << "\n"
               << "thinned skeleton:    " << thinned.total() << " voxels, " << thinned.end << " end points, "
               << thinned.branched_connection << " branched connection points\n"
+              << "sheet lobes reached: " << lobes.lobes_reached << " (" << lobes.sheet_voxels << " thick sheet voxels)\n"
               << "spurious cycles cut: " << cut << "\n"
               << "pruning:             " << pruning.branched_regions << " branched regions, "
               << pruning.removed_branched_points << " branched points and " << pruning.snipped_points
