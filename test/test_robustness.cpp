@@ -494,6 +494,8 @@ BOOST_AUTO_TEST_CASE(out_of_range_parameters_are_refused_before_any_work)
   BOOST_TEST(refused_up_front(params::minimum_bone_length_factor(-1.), "minimum_bone_length_factor", "[0, 1000]"));
   BOOST_TEST(refused_up_front(params::smallest_radius(-1.), "smallest_radius", "[0, inf], got -1"));
   BOOST_TEST(refused_up_front(params::smallest_radius(nan), "smallest_radius", "[0, inf], got nan"));
+  BOOST_TEST(refused_up_front(params::sheet_lobe_reach_factor(-1.), "sheet_lobe_reach_factor", "[0, 100], got -1"));
+  BOOST_TEST(refused_up_front(params::sheet_lobe_reach_factor(nan), "sheet_lobe_reach_factor", "[0, 100], got nan"));
   BOOST_TEST(refused_up_front(params::thin_part_radius(-1.), "thin_part_radius", "[0, 1000], got -1"));
   BOOST_TEST(refused_up_front(params::thin_part_radius(nan), "thin_part_radius", "[0, 1000], got nan"));
   BOOST_TEST(refused_up_front(params::minimum_bone_length_of_piece_factor(-1.), "minimum_bone_length_of_piece_factor",
