@@ -194,6 +194,44 @@ BOOST_AUTO_TEST_CASE(a_bone_the_surface_turns_its_back_on_does_not_take_it)
   BOOST_CHECK_GT(facing_the_prop, 20u);
 }
 
+BOOST_AUTO_TEST_CASE(a_big_head_follows_its_own_bone_not_the_arms_through_it)
+{
+  // A torso, a big round head (radius 3, centre at z 13) and arms along x whose bones leave
+  // the neck at z 11 and run through the lower part of the head, as on a cartoon character.
+  // On the head's side an arm's bone is straight below the surface and nearer than the head's
+  // short bone (bone heat's choice), but the vertex's inscribed ball is centred in the head.
+  shapes::Soup soup = shapes::cylinder(1.5, 10, 24, 20, true);
+  shapes::append(soup, shapes::icosphere(3, 3), 0, 0, 13);
+  shapes::append(soup, shapes::box(-8, -0.6, 10.4, 8, 0.6, 11.6));
+  const Mesh mesh = shapes::mesh_of<Mesh>(soup);
+  Control skeleton;
+  for(const Point& p : {Point(0, 0, 1), Point(0, 0, 11), Point(0, 0, 11.5), Point(3.5, 0, 11), Point(7.5, 0, 11),
+                        Point(-3.5, 0, 11), Point(-7.5, 0, 11)})
+  {
+    gs::Control_joint<Point> joint;
+    joint.point = p;
+    add_vertex(joint, skeleton);
+  }
+  skeleton[boost::graph_bundle].roots.push_back(0);
+  for(const auto& [parent, child] : {std::pair{0, 1}, {1, 2}, {1, 3}, {3, 4}, {1, 5}, {5, 6}})
+    add_edge(std::size_t(parent), std::size_t(child), skeleton);
+  const std::size_t head_bone = 1; // the bone from the neck to the head joint
+  BOOST_REQUIRE_EQUAL(source(gs::numbered_bones(skeleton)[head_bone], skeleton), 1u);
+  BOOST_REQUIRE_EQUAL(target(gs::numbered_bones(skeleton)[head_bone], skeleton), 2u);
+
+  const auto weights = weights_of(mesh, skeleton, CGAL::parameters::default_values());
+  std::size_t head_vertices = 0;
+  for(vertex_descriptor v : vertices(mesh))
+  {
+    const Point& p = mesh.point(v);
+    if(std::abs(std::sqrt(p.x() * p.x() + p.y() * p.y() + (p.z() - 13) * (p.z() - 13)) - 3) > 1e-6 || p.z() < 12.2)
+      continue; // not on the head, or within 0.6 of the arms
+    BOOST_CHECK_EQUAL(weights[v].bone[0], head_bone);
+    ++head_vertices;
+  }
+  BOOST_CHECK_GT(head_vertices, 400u);
+}
+
 BOOST_AUTO_TEST_CASE(bones_at_the_same_distance_share_the_heat)
 {
   // Two bones leave the middle of a bar in opposite directions: on the ring through their

@@ -13,6 +13,7 @@
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
 #include <CGAL/Geodesic_skeleton/internal/skinning/heat_sources.h>
+#include <CGAL/Geodesic_skeleton/internal/skinning/inscribed_balls.h>
 #include <CGAL/Geodesic_skeleton/internal/skinning/skinning_fields.h>
 #include <CGAL/Geodesic_skeleton/internal/skinning/surface_heat.h>
 #include <CGAL/Geodesic_skeleton/internal/skinning/vertex_normals.h>
@@ -417,7 +418,15 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
       distance[u] = internal::unreached;
   }
 
-  internal::Heat_sources sources = finder.sources();
+  // Each vertex's centre: where it sits in the shape, which decides the bone that heats it.
+  std::vector<internal::Vec3> centres(n);
+  {
+    const std::vector<internal::Voxel_distance> depth = internal::depth_below_surface(solid, queue);
+    for(std::size_t v = 0; v < n; ++v)
+      centres[v] = internal::inscribed_ball_centre(cells.grid_point[v], normals[v], solid, depth);
+  }
+  internal::Heat_sources sources = finder.sources(
+      [&](std::size_t v, std::uint32_t b) { return internal::distance_to_polyline(centres[v], polylines[b]); });
   for(std::size_t v = 0; v < n; ++v)
     if(sources.bone[v] == internal::Heat_source_finder::none)
     {

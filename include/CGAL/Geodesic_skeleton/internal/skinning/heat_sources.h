@@ -4,16 +4,19 @@
 #ifndef CGAL_GEODESIC_SKELETON_INTERNAL_SKINNING_HEAT_SOURCES_H
 #define CGAL_GEODESIC_SKELETON_INTERNAL_SKINNING_HEAT_SOURCES_H
 
-// Which bone heats each vertex in compute_skinning_weights(): the bone nearest by the facing
-// distance among the bones that see the vertex, as bone heat has it. A bone sees a vertex
-// when the distance to it through the solid is about the straight one: the straight path
-// stays inside the shape, so a hand resting on a thigh does not see the thigh's bone, nor a
-// vertex of one leg the other leg's. The facing distance is the straight distance e divided
-// by (1 + cos a + 0.001) / 2, with a the angle between the vertex's outward normal and the
+// Which bone heats each vertex in compute_skinning_weights(). A bone sees a vertex when the
+// distance to it through the solid is about the straight one: the straight path stays
+// inside the shape, so a hand resting on a thigh does not see the thigh's bone, nor a
+// vertex of one leg the other leg's. Among the bones that see it, the vertex is heated by
+// the bone nearest to the centre of its inscribed ball (inscribed_balls.h): the bone of the
+// part of the body the vertex bounds, not the one that happens to pass nearest to it (an
+// arm's bone running through the lower part of a big head, a thigh's bone beside the hip).
+// The heat is set by the facing distance to that bone: the straight distance e divided by
+// (1 + cos a + 0.001) / 2, with a the angle between the vertex's outward normal and the
 // direction from the bone's nearest point to the vertex (Blender's bone heat has it): a
-// bone straight below the surface is at e, one to the side at 2 e, one the surface turns
-// its back on at 2000 e. The distance through the solid is what chooses when no bone sees
-// the vertex (a sheet folded round, a pocket of the solid).
+// bone straight below the surface is at e, one to the side at 2 e. The distance through
+// the solid is what chooses when no bone sees the vertex (a sheet folded round, a pocket
+// of the solid).
 
 #include <CGAL/Geodesic_skeleton/internal/skinning/surface_heat.h>
 
@@ -22,6 +25,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -37,10 +41,10 @@ public:
   // diagonal); a bone within that slack sees the vertex.
   static constexpr double metric_slack = 1.1, voxel_slack = 1.5;
 
-  // Bones whose facing distances differ by less than this share are at the same distance
-  // (bone heat's tolerance): a vertex beyond a joint, whose nearest point on the bones into
-  // and out of the joint is the joint itself, or on a mirror plane, is heated by all of
-  // them, not by whichever the order of the searches or a rounding favours.
+  // Bones whose distances to the centre differ by less than this share are at the same
+  // distance (bone heat's tolerance): a vertex whose centre is at a joint, or on a mirror
+  // plane, is heated by all of them, not by whichever the order of the searches or a
+  // rounding favours.
   static constexpr double tie = 1e-4;
 
   explicit Heat_source_finder(std::size_t vertices)
@@ -54,22 +58,14 @@ public:
   static double facing_distance(double e, double cosine) { return e / (0.5 * (cosine + 1.001)); }
 
   // Bone `bone` is at `through_solid` voxels from vertex `v` through the solid;
-  // `distances()` (computed only when it may matter) gives its straight distance and its
-  // facing distance.
+  // `distances()` gives its straight distance and its facing distance.
   template <typename Distances>
   void add(std::uint32_t v, std::uint32_t bone, double through_solid, Distances distances)
   {
-    const bool nearer_through_solid = through_solid < m_through_solid[v];
-    // A bone that sees the vertex is at least this far in straight line, and the facing
-    // distance is at least the straight one over 1.0005.
-    const bool may_see_nearer =
-        (through_solid - voxel_slack) / metric_slack < 1.0005 * (1 + tie) * m_seen[v].least;
-    if(!nearer_through_solid && !may_see_nearer)
-      return;
     const auto [straight, facing] = distances();
-    if(may_see_nearer && through_solid <= metric_slack * straight + voxel_slack)
-      m_seen[v].offer(bone, facing);
-    if(nearer_through_solid)
+    if(through_solid <= metric_slack * straight + voxel_slack)
+      m_seen[v].offer(bone, straight, facing);
+    if(through_solid < m_through_solid[v])
     {
       m_nearest[v] = bone;
       m_through_solid[v] = through_solid;
@@ -78,8 +74,10 @@ public:
   }
 
   // Per vertex, the bones that heat it and the facing distance to them (bone `none` for a
-  // vertex no bone reached).
-  Heat_sources sources() const
+  // vertex no bone reached). `to_centre(v, b)` is the distance from the centre of vertex
+  // v's inscribed ball to bone b; it is asked only of vertices that several bones see.
+  template <typename DistanceToCentre>
+  Heat_sources sources(DistanceToCentre to_centre) const
   {
     const std::size_t n = m_seen.size();
     Heat_sources s;
@@ -87,51 +85,54 @@ public:
     s.distance.assign(n, HUGE_VAL);
     s.tied.assign(n, Heat_sources::no_tied_bones());
     for(std::size_t v = 0; v < n; ++v)
-      if(const Seen_bones& seen = m_seen[v]; seen.count > 0)
-      {
-        s.bone[v] = seen.bone[0];
-        s.distance[v] = seen.least;
-        std::copy(seen.bone.begin() + 1, seen.bone.begin() + seen.count, s.tied[v].begin());
-      }
-      else
+    {
+      const Seen_bones& seen = m_seen[v];
+      if(seen.count == 0)
       {
         s.bone[v] = m_nearest[v];
         s.distance[v] = m_nearest_facing[v];
+        continue;
       }
+      // The seen bones by distance to the centre, then by number.
+      std::array<std::pair<double, std::uint8_t>, Seen_bones::capacity> order;
+      for(std::uint8_t i = 0; i < seen.count; ++i)
+        order[i] = {seen.count > 1 ? to_centre(v, seen.bone[i]) : 0., i};
+      std::sort(order.begin(), order.begin() + seen.count, [&](const auto& a, const auto& b) {
+        return a.first != b.first ? a.first < b.first : seen.bone[a.second] < seen.bone[b.second];
+      });
+      s.bone[v] = seen.bone[order[0].second];
+      s.distance[v] = seen.facing[order[0].second];
+      for(std::size_t i = 1, tied = 0; i < seen.count && tied < Heat_sources::most_tied; ++i)
+        if(order[i].first <= order[0].first * (1 + tie))
+          s.tied[v][tied++] = seen.bone[order[i].second];
+    }
     return s;
   }
 
 private:
-  // The bones that see a vertex within `tie` of the least facing distance.
+  // The bones that see a vertex: the `capacity` nearest in straight line.
   struct Seen_bones
   {
-    static constexpr std::size_t capacity = Heat_sources::most_tied + 1;
+    static constexpr std::size_t capacity = 8;
     std::array<std::uint32_t, capacity> bone{};
+    std::array<float, capacity> straight{};
     std::array<double, capacity> facing{};
     std::uint8_t count = 0;
-    double least = HUGE_VAL;
 
-    void offer(std::uint32_t b, double f)
+    void offer(std::uint32_t b, double e, double f)
     {
-      if(f > least * (1 + tie))
-        return;
-      if(f < least)
+      std::size_t slot = count;
+      if(count == capacity)
       {
-        least = f;
-        std::uint8_t kept = 0;
-        for(std::uint8_t i = 0; i < count; ++i)
-          if(facing[i] <= least * (1 + tie))
-          {
-            bone[kept] = bone[i];
-            facing[kept++] = facing[i];
-          }
-        count = kept;
+        slot = std::size_t(std::max_element(straight.begin(), straight.end()) - straight.begin());
+        if(straight[slot] <= e)
+          return;
       }
-      if(count < capacity)
-      {
-        bone[count] = b;
-        facing[count++] = f;
-      }
+      else
+        ++count;
+      bone[slot] = b;
+      straight[slot] = float(e);
+      facing[slot] = f;
     }
   };
 
