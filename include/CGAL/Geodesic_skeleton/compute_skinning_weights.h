@@ -170,14 +170,17 @@ inline void normalise(Bone_weights& weights)
 /// Characters</i>, SIGGRAPH 2007) with the solid deciding what a bone sees. Distances from the
 /// bones run through the voxels of the mesh's solid (`voxelize()`, as in Dionne and de Lasa's
 /// geodesic voxel binding); a bone sees a vertex when that distance is about the straight one.
-/// Each vertex is heated by the bone nearest by the <i>facing distance</i> among those that see
-/// it (the bone nearest through the solid when none does; the bone nearest in straight line in
-/// a detached piece that no bone's search reaches): the straight distance divided by
+/// Each vertex is heated by the bone nearest to the centre of its <i>inscribed ball</i> (the
+/// largest ball inside the solid that touches the surface at the vertex, found along the
+/// inward normal) among those that see it: the bone of the part of the body the vertex
+/// bounds, not the one that passes nearest to it (an arm's bone running through the lower
+/// part of a big head; bones within 10^-4 of the least distance share the heat equally; the
+/// bone nearest through the solid when none sees the vertex, the bone nearest in straight
+/// line in a detached piece that no bone's search reaches). The heat is set by the
+/// <i>facing distance</i> to that bone: the straight distance divided by
 /// `(1 + cos a + 0.001) / 2`, with `a` the angle between the vertex's outward normal and the
-/// direction from the bone to the vertex (as Blender's bone heat has it: a bone under the
-/// surface is at its distance, one the surface turns its back on is far; the normals point
-/// out of each connected piece whatever the winding; bones within 10^-4 of the least facing
-/// distance share the heat equally). The heat is `A / d^2` (`A` the vertex's
+/// direction from the bone to the vertex (as Blender's bone heat has it; the normals point
+/// out of each connected piece whatever the winding). The heat is `A / d^2` (`A` the vertex's
 /// area, `d` the facing distance), and it diffuses over the surface: the weights of bone
 /// `b` solve `(L + diag(A / d^2)) w_b = diag(A / d^2) [heated by b]`, with `L` the cotangent
 /// Laplacian (obtuse angles' negative cotangents clamped to 0, so that the weights stay in
@@ -232,9 +235,10 @@ inline void normalise(Bone_weights& weights)
 ///                           times as far as the nearest bone, in [1.05, 100] (package
 ///                           parameter): only bones that near may heat a vertex}
 ///     \cgalParamType{`double`}
-///     \cgalParamDefault{1.25: the facing distance picks the bone under the surface, which
-///                       is rarely farther than that through the solid (on artists' weights,
-///                       section \ref manual_skinning_method, 2 gives the same and costs 20 % more)}
+///     \cgalParamDefault{1.25: the bone that heats a vertex is rarely farther than that
+///                       through the solid (on artists' weights, section
+///                       \ref manual_skinning_method, 1.5 and 2 give about the same and cost
+///                       10 and 20 % more)}
 ///     \cgalParamExtra{A larger ratio costs more: `Skinning_report::voxel_visits`.}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{bone_segmentation_map}
@@ -248,7 +252,7 @@ inline void normalise(Bone_weights& weights)
 ///     \cgalParamDescription{as for `voxelize()`: the voxel grid of the distances}
 ///     \cgalParamType{as for `voxelize()`}
 ///     \cgalParamDefault{as for `voxelize()` (resolution `default_voxel_resolution`, 64)}
-///     \cgalParamExtra{The memory need is checked first: about 13 bytes per voxel of the
+///     \cgalParamExtra{The memory need is checked first: about 17 bytes per voxel of the
 ///                     solid's box, 16 per solid voxel and about 900 per vertex (the sparse factorisation), besides
 ///                     `voxelize()`'s.}
 ///   \cgalParamNEnd
@@ -284,7 +288,9 @@ inline void normalise(Bone_weights& weights)
 /// `voxelized_solid`), plus O(V) for the nearest-bone search over the V solid
 /// voxels (a bucket queue), plus O(V_b) per bone for the V_b voxels its bounded search visits
 /// (in total a small multiple of V: `Skinning_report::voxel_visits`), plus O(N B_v P) for
-/// N vertices, B_v bones reaching a vertex and P points per bone polyline, plus the sparse
+/// N vertices, B_v bones reaching a vertex and P points per bone polyline, plus O(V) for the
+/// depth of the solid's voxels and O(N R) for the inscribed balls (R the solid's largest
+/// depth in voxels), plus the sparse
 /// Cholesky factorisation of the N x N system (about O(N^1.5) on a surface) and one solve
 /// per bone (O(F) for the F non-zeros of the factor); O(V_box + V + F) memory.
 template <typename TriangleMesh, typename Point, typename WeightMap,
@@ -339,7 +345,7 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   const std::size_t n = num_vertices(mesh);
   {
     const internal::Grid_layout layout(grid.bounding_box().grown(1));
-    internal::require_memory(13. * double(layout.volume()) + 16. * double(report.solid_voxels) + 900. * double(n),
+    internal::require_memory(17. * double(layout.volume()) + 16. * double(report.solid_voxels) + 900. * double(n),
                              limit, layout, caller, "the distance fields of a grid");
   }
   const internal::Solid_voxels solid(grid);
@@ -421,7 +427,7 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   // Each vertex's centre: where it sits in the shape, which decides the bone that heats it.
   std::vector<internal::Vec3> centres(n);
   {
-    const std::vector<internal::Voxel_distance> depth = internal::depth_below_surface(solid, queue);
+    const std::vector<internal::Voxel_distance> depth = internal::depth_in_solid(solid);
     for(std::size_t v = 0; v < n; ++v)
       centres[v] = internal::inscribed_ball_centre(cells.grid_point[v], normals[v], solid, depth);
   }

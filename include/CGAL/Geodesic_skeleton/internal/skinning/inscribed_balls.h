@@ -15,6 +15,7 @@
 #include <CGAL/Geodesic_skeleton/internal/skinning/skinning_fields.h>
 #include <CGAL/Geodesic_skeleton/internal/vec3.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -24,54 +25,64 @@ namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
 
-// Per solid voxel, its distance through the solid (in hundredths of a voxel) to the nearest
-// voxel at the surface: a solid voxel with an outside voxel among its 26 neighbours.
-inline std::vector<Voxel_distance> depth_below_surface(const Solid_voxels& solid, Bucket_queue& queue)
+// Per cell of the solid's layout, the distance (in hundredths of a voxel, the steps of
+// the 26 neighbours weighted 100, 141 and 173) from its centre to the centre of the nearest
+// voxel outside the solid; 0 outside. Two raster passes over the layout (Rosenfeld and
+// Pfaltz's chamfer transform): each cell takes the least of its neighbours' values plus the
+// step, over the 13 neighbours before it in the first pass and after it in the second. The
+// path to the nearest outside voxel never leaves the solid before it, so this is the
+// distance through the solid. The layout's border cells are outside (it is the solid's box
+// grown by one voxel).
+inline std::vector<Voxel_distance> depth_in_solid(const Solid_voxels& solid)
 {
-  std::vector<std::uint32_t> surface;
-  for(std::uint32_t u = 0; u < solid.size(); ++u)
-  {
-    const std::ptrdiff_t cell = std::ptrdiff_t(solid.cell_of_solid[u]);
-    for(std::ptrdiff_t offset : solid.offsets)
-      if(solid.solid_of_cell[std::size_t(cell + offset)] < 0)
-      {
-        surface.push_back(u);
-        break;
-      }
-  }
-  std::vector<Voxel_distance> depth(solid.size(), unreached);
-  std::vector<std::uint32_t> reached;
-  voxel_dijkstra(solid, surface, depth, reached, queue, [](std::uint32_t, Voxel_distance) { return true; });
+  const std::size_t cells = solid.layout.volume();
+  std::vector<Voxel_distance> depth(cells, 0);
+  for(std::uint32_t cell : solid.cell_of_solid)
+    depth[cell] = unreached;
+  auto relax = [&](std::uint32_t cell, bool before) {
+    Voxel_distance d = depth[cell];
+    for(std::size_t n = 0; n < 26; ++n)
+      if((solid.offsets[n] < 0) == before)
+        d = std::min(d, depth[std::size_t(std::ptrdiff_t(cell) + solid.offsets[n])] + solid.steps[n]);
+    depth[cell] = d;
+  };
+  // The solid's cells are in increasing order of their index (the grid's own order).
+  for(std::uint32_t cell : solid.cell_of_solid)
+    relax(cell, true);
+  for(auto cell = solid.cell_of_solid.rbegin(); cell != solid.cell_of_solid.rend(); ++cell)
+    relax(*cell, false);
   return depth;
 }
 
 // The centre of the ball inside the solid that touches the surface at `point` (grid
 // coordinates) with outward unit normal `normal`: the point `point - t normal` of largest t
-// such that every point of the segment before it, in steps of half a voxel, lies in the
-// solid at a depth of at least its distance t from `point`, less a slack of 2 voxels (the
-// depth runs between voxel centres, up to a voxel short of the surface, and the voxel
-// metric is up to 8 % long). Points outside the solid within the slack of `point` are
-// passed over (the vertex is on the surface, which its voxels may not cover). `point`
-// itself when the normal is 0 or the solid is not met.
+// such that every point of the segment before it, in steps of half a voxel, lies in a solid
+// voxel whose `depth` (depth_in_solid()) is at least t less a slack of half a voxel (the
+// steps' granularity; the depth runs to an outside voxel's centre, up to a voxel beyond the
+// surface, which makes up for the voxel metric's error, up to 8 % long). The slack is the
+// one constant, calibrated on artists' weights (manual, section manual_skinning_method). Points outside the solid within 2 voxels of
+// `point` are passed over (the vertex is on the surface, which its voxels may not cover).
+// `point` itself when the normal is 0 or the solid is not met.
 inline Vec3 inscribed_ball_centre(const Vec3& point, const Vec3& normal, const Solid_voxels& solid,
                                   const std::vector<Voxel_distance>& depth)
 {
-  constexpr double step = 0.5, slack = 2;
+  constexpr double step = 0.5, slack = 0.5, entry = 2;
   Vec3 centre = point;
   if(dot3(normal, normal) == 0)
     return centre;
   for(double t = 0;; t += step)
   {
     const Vec3 p{point[0] - t * normal[0], point[1] - t * normal[1], point[2] - t * normal[2]};
-    const std::int32_t u = solid.solid(Voxel_key{int(std::floor(p[0])), int(std::floor(p[1])), int(std::floor(p[2]))});
-    if(u < 0)
+    const Voxel_key k{int(std::floor(p[0])), int(std::floor(p[1])), int(std::floor(p[2]))};
+    const bool inside = solid.layout.box.contains(k) && solid.solid_of_cell[solid.layout.index(k)] >= 0;
+    if(!inside)
     {
-      if(t < slack)
+      if(t < entry)
         continue;
       return centre;
     }
-    // A depth is finite: every piece of the solid has a voxel at its surface.
-    if(depth[std::size_t(u)] * voxels_per_unit + slack < t)
+    // The depth is finite inside: the layout's border is outside.
+    if(depth[solid.layout.index(k)] * voxels_per_unit + slack < t)
       return centre;
     centre = p;
   }
