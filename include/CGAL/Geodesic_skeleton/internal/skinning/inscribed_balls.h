@@ -60,9 +60,10 @@ inline std::vector<Voxel_distance> depth_in_solid(const Solid_voxels& solid)
 // voxel whose `depth` (depth_in_solid()) is at least t less a slack of half a voxel (the
 // steps' granularity; the depth runs to an outside voxel's centre, up to a voxel beyond the
 // surface, which makes up for the voxel metric's error, up to 8 % long). The slack is the
-// one constant, calibrated on artists' weights (manual, section manual_skinning_method). Points outside the solid within 2 voxels of
-// `point` are passed over (the vertex is on the surface, which its voxels may not cover).
-// `point` itself when the normal is 0 or the solid is not met.
+// one constant, calibrated on artists' weights (manual, section manual_skinning_method).
+// Points outside the solid within 2 voxels of `point` are passed over (the vertex is on the
+// surface, which its voxels may not cover). `point` itself when the normal is 0 or the
+// solid is not met.
 inline Vec3 inscribed_ball_centre(const Vec3& point, const Vec3& normal, const Solid_voxels& solid,
                                   const std::vector<Voxel_distance>& depth)
 {
@@ -70,19 +71,18 @@ inline Vec3 inscribed_ball_centre(const Vec3& point, const Vec3& normal, const S
   Vec3 centre = point;
   if(dot3(normal, normal) == 0)
     return centre;
+  // The walk ends: the solid's box is finite, and a solid voxel's depth is finite.
   for(double t = 0;; t += step)
   {
     const Vec3 p{point[0] - t * normal[0], point[1] - t * normal[1], point[2] - t * normal[2]};
-    const Voxel_key k{int(std::floor(p[0])), int(std::floor(p[1])), int(std::floor(p[2]))};
-    const bool inside = solid.layout.box.contains(k) && solid.solid_of_cell[solid.layout.index(k)] >= 0;
-    if(!inside)
+    const std::int32_t u = solid.solid(Voxel_key{int(std::floor(p[0])), int(std::floor(p[1])), int(std::floor(p[2]))});
+    if(u < 0)
     {
       if(t < entry)
         continue;
       return centre;
     }
-    // The depth is finite inside: the layout's border is outside.
-    if(depth[solid.layout.index(k)] * voxels_per_unit + slack < t)
+    if(depth[solid.cell_of_solid[std::size_t(u)]] * voxels_per_unit + slack < t)
       return centre;
     centre = p;
   }
