@@ -251,14 +251,14 @@ private:
         break;
       }
       const Voxel_key k = m_layout.key(v);
-      for(const Voxel_key& o : neighbourhood_26())
+      for(std::size_t b = 0; b < 26; ++b)
       {
-        const Voxel_key n = k + o;
+        const Voxel_key n = k + neighbourhood_26()[b];
         const std::uint32_t d2 = m_distances.squared_distance(n); // 0 outside the box and the solid
         if(d2 == 0)
           continue;
         const std::uint32_t j = std::uint32_t(m_layout.index(n));
-        const double c = cost + std::sqrt(double(o.x * o.x + o.y * o.y + o.z * o.z)) / double(d2);
+        const double c = cost + m_step_lengths[b] / double(d2);
         if(c < m_cost[j])
         {
           if(m_cost[j] == std::numeric_limits<double>::infinity())
