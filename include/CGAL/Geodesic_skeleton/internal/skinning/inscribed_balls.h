@@ -16,9 +16,11 @@
 #include <CGAL/Geodesic_skeleton/internal/vec3.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -39,18 +41,21 @@ inline std::vector<Voxel_distance> depth_in_solid(const Solid_voxels& solid)
   std::vector<Voxel_distance> depth(cells, 0);
   for(std::uint32_t cell : solid.cell_of_solid)
     depth[cell] = unreached;
-  auto relax = [&](std::uint32_t cell, bool before) {
+  // The neighbours before a cell (negative offsets) and after it, with their steps.
+  std::array<std::pair<std::ptrdiff_t, Voxel_distance>, 13> before, after;
+  for(std::size_t n = 0, b = 0, a = 0; n < 26; ++n)
+    (solid.offsets[n] < 0 ? before[b++] : after[a++]) = {solid.offsets[n], solid.steps[n]};
+  auto relax = [&](std::uint32_t cell, const std::array<std::pair<std::ptrdiff_t, Voxel_distance>, 13>& side) {
     Voxel_distance d = depth[cell];
-    for(std::size_t n = 0; n < 26; ++n)
-      if((solid.offsets[n] < 0) == before)
-        d = std::min(d, depth[std::size_t(std::ptrdiff_t(cell) + solid.offsets[n])] + solid.steps[n]);
+    for(const auto& [offset, step] : side)
+      d = std::min(d, depth[std::size_t(std::ptrdiff_t(cell) + offset)] + step);
     depth[cell] = d;
   };
   // The solid's cells are in increasing order of their index (the grid's own order).
   for(std::uint32_t cell : solid.cell_of_solid)
-    relax(cell, true);
+    relax(cell, before);
   for(auto cell = solid.cell_of_solid.rbegin(); cell != solid.cell_of_solid.rend(); ++cell)
-    relax(*cell, false);
+    relax(*cell, after);
   return depth;
 }
 
