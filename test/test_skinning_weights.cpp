@@ -9,6 +9,7 @@
 
 #include <Geodesic_skeleton_test/rigs.h>
 #include <Geodesic_skeleton_test/shapes.h>
+#include <Geodesic_skeleton_test/voxel_skeleton.h>
 
 #include <boost/test/unit_test.hpp>
 
@@ -238,16 +239,11 @@ BOOST_AUTO_TEST_CASE(a_big_head_follows_its_own_bone_not_the_arms_through_it)
 namespace {
 
 // The voxels of a 44^3 box whose centres satisfy `inside` (grid coordinates).
-gs::Dense_voxel_grid voxels_where(const std::function<bool(double, double, double)>& inside)
+gs::Dense_voxel_grid voxels_whose_centres(const std::function<bool(double, double, double)>& inside)
 {
-  gs::Dense_voxel_grid grid;
-  grid.reset(gs::Voxel_frame(), gs::Voxel_box{gs::Voxel_key{0, 0, 0}, gs::Voxel_key{44, 44, 44}});
-  for(int z = 0; z < 44; ++z)
-    for(int y = 0; y < 44; ++y)
-      for(int x = 0; x < 44; ++x)
-        if(inside(x + 0.5, y + 0.5, z + 0.5))
-          grid.insert(gs::Voxel_key{x, y, z});
-  return grid;
+  return Geodesic_skeleton_test::voxels_where<gs::Dense_voxel_grid>(
+      gs::Voxel_box{gs::Voxel_key{0, 0, 0}, gs::Voxel_key{44, 44, 44}},
+      [&](int x, int y, int z) { return inside(x + 0.5, y + 0.5, z + 0.5); });
 }
 
 } // namespace
@@ -256,7 +252,7 @@ BOOST_AUTO_TEST_CASE(the_depth_is_the_distance_through_the_solid_to_the_nearest_
 {
   // Balls and a torus (whose voxels' nearest outside voxel may be round a bend): the two
   // raster passes give what a Dijkstra search from every outside voxel of the layout gives.
-  const gs::Dense_voxel_grid grid = voxels_where([](double x, double y, double z) {
+  const gs::Dense_voxel_grid grid = voxels_whose_centres([](double x, double y, double z) {
     const double ring = std::hypot(x - 22, y - 22) - 12;
     return ring * ring + (z - 22) * (z - 22) < 16 || std::hypot(x - 12, y - 14, z - 20) < 9 ||
            std::hypot(x - 30, y - 28, z - 26) < 11;
@@ -299,10 +295,10 @@ BOOST_AUTO_TEST_CASE(the_depth_is_the_distance_through_the_solid_to_the_nearest_
 
 BOOST_AUTO_TEST_CASE(an_inscribed_balls_centre_is_the_middle_of_a_ball_or_the_axis_of_a_bar)
 {
-  const gs::Dense_voxel_grid ball = voxels_where([](double x, double y, double z) {
+  const gs::Dense_voxel_grid ball = voxels_whose_centres([](double x, double y, double z) {
     return std::hypot(x - 22, y - 22, z - 22) < 15;
   });
-  const gs::Dense_voxel_grid bar = voxels_where([](double, double y, double z) {
+  const gs::Dense_voxel_grid bar = voxels_whose_centres([](double, double y, double z) {
     return std::hypot(y - 22, z - 22) < 6;
   });
   for(const gs::Dense_voxel_grid* grid : {&ball, &bar})

@@ -31,18 +31,7 @@ namespace {
 
 using Voxel_set_models = boost::mpl::list<gs::Dense_voxel_grid, gs::Sparse_voxel_set>;
 
-template <typename VoxelSet>
-VoxelSet voxels_where(const gs::Voxel_box& box, const std::function<bool(int, int, int)>& inside)
-{
-  VoxelSet s;
-  s.reset(gs::Voxel_frame(), box);
-  for(int z = box.min.z; z < box.max.z; ++z)
-    for(int y = box.min.y; y < box.max.y; ++y)
-      for(int x = box.min.x; x < box.max.x; ++x)
-        if(inside(x, y, z))
-          s.insert(gs::Voxel_key{x, y, z});
-  return s;
-}
+using Geodesic_skeleton_test::voxels_where;
 
 // Topology of a set, independently of the package: 26-components, cavities (6-components
 // of the background minus the outer one) and Euler characteristic.

@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <random>
 #include <set>
@@ -31,6 +32,20 @@
 namespace Geodesic_skeleton_test {
 
 namespace gs = CGAL::Geodesic_skeleton;
+
+// The voxels of `box` (identity frame) whose keys satisfy `inside`, in a set of type VoxelSet.
+template <typename VoxelSet>
+VoxelSet voxels_where(const gs::Voxel_box& box, const std::function<bool(int, int, int)>& inside)
+{
+  VoxelSet s;
+  s.reset(gs::Voxel_frame(), box);
+  for(int z = box.min.z; z < box.max.z; ++z)
+    for(int y = box.min.y; y < box.max.y; ++y)
+      for(int x = box.min.x; x < box.max.x; ++x)
+        if(inside(x, y, z))
+          s.insert(gs::Voxel_key{x, y, z});
+  return s;
+}
 
 // The largest of the sheet radii that thin() recorded, 0 when there are none.
 inline double largest_sheet_radius(const gs::Sheet_radii& radii)
