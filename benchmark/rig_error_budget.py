@@ -8,6 +8,9 @@ the split (DATA and SPLIT as there). Everything is in units of the mesh's larges
 in rig_benchmark.py. Prints means over the characters:
 
 - the two halves of CD-J2J: from our joints to the artists' and back;
+- the first half by the kind of our joint (the root, the ends, the joints along chains,
+  the junctions) and by how far it is from the artists' bones (on an artist's chain or
+  off every chain): the joints per character and their part of the half;
 - the end chains of our rig (from an end joint to the first junction, the junction left out)
   that are *extra*: every joint farther than 0.05 from every artist bone. Their share of our
   joints and of the first half;
@@ -70,6 +73,18 @@ def end_chains(count, bones):
             path.append(current)
         chains.append((path, junction))
     return chains
+
+
+JOINT_KINDS = ('root', 'end', 'chain', 'junction')
+BAND_EDGES = (0.02, 0.08)  # distance to the artists' bones: on their chain, near, off every chain
+BANDS = ('<0.02', '0.02-0.08', '>0.08')
+
+
+def joint_kind(parent, degree):
+    """The root, an end (one bone), a joint along a chain (two) or a junction (three or more)."""
+    if parent < 0:
+        return 'root'
+    return 'end' if degree == 1 else 'chain' if degree == 2 else 'junction'
 
 
 def junction_depth(parents, adjacent, joint):
@@ -150,6 +165,7 @@ def main(argv):
     rules['bound: end chains trimmed'] = lambda chain: chain['path'][:chain['far_tip_joints']]
 
     halves, extra_share, extra_part, missing_share, missing_part = [], [], [], [], []
+    by_kind = collections.defaultdict(lambda: np.zeros(2))  # (joints, part of the first half) summed
     features, labels = collections.defaultdict(list), []
     results = collections.defaultdict(list)
     for i in ids:
@@ -167,6 +183,10 @@ def main(argv):
         missing_part.append(0.5 * artists_to_ours[missing].sum() / len(artist_joints))
 
         adjacent = neighbours(len(positions), bones)
+        for k in range(len(positions)):
+            kind = joint_kind(parents[k], len(adjacent[k]))
+            band = BANDS[np.searchsorted(BAND_EDGES, near_artists[k], side='right')]
+            by_kind[(kind, band)] += (1.0, ours_to_artists[k] / len(positions))
         chains = []
         for path, junction in end_chains(len(positions), bones):
             if junction is None:
@@ -204,6 +224,11 @@ def main(argv):
     print('%d characters of %s' % (len(halves), split))
     print('CD-J2J %.4f = (ours to the artists\' %.4f + the artists\' to ours %.4f) / 2'
           % (halves.mean(0).sum() / 2, halves[:, 0].mean(), halves[:, 1].mean()))
+    print('ours to the artists\' by our joint\'s kind and its distance to the artists\' bones'
+          ' (joints per character, part of the half):')
+    for kind in JOINT_KINDS:
+        print('  %-9s' % kind + ''.join('  %s %4.1f %.4f' % (band, *(by_kind[(kind, band)] / len(halves)))
+                                     for band in BANDS))
     print('our joints on extra end chains: %.3f of them, %.4f of CD-J2J'
           % (np.mean(extra_share), np.mean(extra_part)))
     print('artists\' joints missing from their ends inwards: %.3f of them, %.4f of CD-J2J'
