@@ -9,8 +9,9 @@ in rig_benchmark.py. Prints means over the characters:
 
 - the two halves of CD-J2J: from our joints to the artists' and back;
 - the first half by the kind of our joint (the root, the ends, the joints along chains,
-  the junctions) and by how far it is from the artists' bones (on an artist's chain or
-  off every chain): the joints per character and their part of the half;
+  the junctions) and by its distance to the artists' bones (under 0.02: on an artist's
+  chain; 0.02 to 0.08; over 0.08: off every chain): the joints per character and their
+  part of the half;
 - the end chains of our rig (from an end joint to the first junction, the junction left out)
   that are *extra*: every joint farther than 0.05 from every artist bone. Their share of our
   joints and of the first half;
