@@ -18,7 +18,6 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
-#include <queue>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -248,51 +247,6 @@ gs::Dense_voxel_grid voxels_whose_centres(const std::function<bool(double, doubl
 
 } // namespace
 
-BOOST_AUTO_TEST_CASE(the_depth_is_the_distance_through_the_solid_to_the_nearest_outside_voxel)
-{
-  // Balls and a torus (whose voxels' nearest outside voxel may be round a bend): the two
-  // raster passes give what a Dijkstra search from every outside voxel of the layout gives.
-  const gs::Dense_voxel_grid grid = voxels_whose_centres([](double x, double y, double z) {
-    const double ring = std::hypot(x - 22, y - 22) - 12;
-    return ring * ring + (z - 22) * (z - 22) < 16 || std::hypot(x - 12, y - 14, z - 20) < 9 ||
-           std::hypot(x - 30, y - 28, z - 26) < 11;
-  });
-  const gs::internal::Solid_voxels solid(grid);
-  const std::vector<gs::internal::Voxel_distance> depth = gs::internal::depth_in_solid(solid);
-  std::vector<gs::internal::Voxel_distance> expected(solid.layout.volume(), gs::internal::unreached);
-  using Entry = std::pair<gs::internal::Voxel_distance, std::size_t>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-  for(std::size_t cell = 0; cell < expected.size(); ++cell)
-    if(solid.solid_of_cell[cell] < 0)
-      queue.push({expected[cell] = 0, cell});
-  while(!queue.empty())
-  {
-    const auto [d, cell] = queue.top();
-    queue.pop();
-    if(d != expected[cell])
-      continue;
-    const gs::Voxel_key k = solid.layout.key(cell);
-    for(std::size_t n = 0; n < 26; ++n)
-    {
-      const gs::Voxel_key m = k + gs::neighbourhood_26()[n];
-      if(!solid.layout.box.contains(m))
-        continue;
-      const std::size_t next = solid.layout.index(m);
-      if(d + solid.steps[n] < expected[next])
-        queue.push({expected[next] = d + solid.steps[n], next});
-    }
-  }
-  std::size_t differing = 0;
-  gs::internal::Voxel_distance deepest = 0;
-  for(std::uint32_t cell : solid.cell_of_solid)
-  {
-    differing += depth[cell] != expected[cell];
-    deepest = std::max(deepest, depth[cell]);
-  }
-  BOOST_TEST(differing == 0u);
-  BOOST_TEST(deepest >= 900u); // the larger ball is 11 voxels in radius
-}
-
 BOOST_AUTO_TEST_CASE(an_inscribed_balls_centre_is_the_middle_of_a_ball_or_the_axis_of_a_bar)
 {
   const gs::Dense_voxel_grid ball = voxels_whose_centres([](double x, double y, double z) {
@@ -303,8 +257,7 @@ BOOST_AUTO_TEST_CASE(an_inscribed_balls_centre_is_the_middle_of_a_ball_or_the_ax
   });
   for(const gs::Dense_voxel_grid* grid : {&ball, &bar})
   {
-    const gs::internal::Solid_voxels solid(*grid);
-    const auto depth = gs::internal::depth_in_solid(solid);
+    const gs::Voxel_distance_field depth = gs::distance_transform(*grid);
     const double radius = grid == &ball ? 15 : 6;
     for(int i = 0; i < 40; ++i)
     {
@@ -316,13 +269,13 @@ BOOST_AUTO_TEST_CASE(an_inscribed_balls_centre_is_the_middle_of_a_ball_or_the_ax
                                             : gs::internal::Vec3{0, std::cos(around), std::sin(around)};
       const double x = grid == &ball ? 22 : 12 + 0.5 * i; // along the bar, away from its ends
       const gs::internal::Vec3 point{x + radius * normal[0], 22 + radius * normal[1], 22 + radius * normal[2]};
-      const gs::internal::Vec3 centre = gs::internal::inscribed_ball_centre(point, normal, solid, depth);
+      const gs::internal::Vec3 centre = gs::internal::inscribed_ball_centre(point, normal, depth);
       const gs::internal::Vec3 expected{x, 22, 22};
       BOOST_TEST(gs::internal::norm3(gs::internal::sub(centre, expected)) < 1.5,
                  "point " << i << ": centre " << centre[0] << " " << centre[1] << " " << centre[2]);
     }
     const gs::internal::Vec3 on_surface{22, 22 + radius, 22};
-    const gs::internal::Vec3 no_normal = gs::internal::inscribed_ball_centre(on_surface, {0, 0, 0}, solid, depth);
+    const gs::internal::Vec3 no_normal = gs::internal::inscribed_ball_centre(on_surface, {0, 0, 0}, depth);
     BOOST_TEST(gs::internal::norm3(gs::internal::sub(no_normal, on_surface)) == 0);
   }
 }

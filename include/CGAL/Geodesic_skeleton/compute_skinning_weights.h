@@ -11,6 +11,8 @@
 #include <CGAL/Geodesic_skeleton/Bone_weights.h>
 #include <CGAL/Geodesic_skeleton/Control_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
+#include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
+#include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
 #include <CGAL/Geodesic_skeleton/internal/skinning/heat_sources.h>
 #include <CGAL/Geodesic_skeleton/internal/skinning/inscribed_balls.h>
@@ -252,7 +254,7 @@ inline void normalise(Bone_weights& weights)
 ///     \cgalParamDescription{as for `voxelize()`: the voxel grid of the distances}
 ///     \cgalParamType{as for `voxelize()`}
 ///     \cgalParamDefault{as for `voxelize()` (resolution `default_voxel_resolution`, 64)}
-///     \cgalParamExtra{The memory need is checked first: about 17 bytes per voxel of the
+///     \cgalParamExtra{The memory need is checked first: about 21 bytes per voxel of the
 ///                     solid's box, 16 per solid voxel and about 900 per vertex (the sparse factorisation), besides
 ///                     `voxelize()`'s.}
 ///   \cgalParamNEnd
@@ -288,9 +290,9 @@ inline void normalise(Bone_weights& weights)
 /// `voxelized_solid`), plus O(V) for the nearest-bone search over the V solid
 /// voxels (a bucket queue), plus O(V_b) per bone for the V_b voxels its bounded search visits
 /// (in total a small multiple of V: `Skinning_report::voxel_visits`), plus O(N B_v P) for
-/// N vertices, B_v bones reaching a vertex and P points per bone polyline, plus O(V) for the
-/// depth of the solid's voxels and O(N R) for the inscribed balls (R the solid's largest
-/// depth in voxels), plus the sparse
+/// N vertices, B_v bones reaching a vertex and P points per bone polyline, plus O(V_box) for
+/// the solid's `distance_transform()` over the V_box voxels of its box and O(N R) for the
+/// inscribed balls (R the solid's largest MAT radius in voxels), plus the sparse
 /// Cholesky factorisation of the N x N system (about O(N^1.5) on a surface) and one solve
 /// per bone (O(F) for the F non-zeros of the factor); O(V_box + V + F) memory.
 template <typename TriangleMesh, typename Point, typename WeightMap,
@@ -345,10 +347,11 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   const std::size_t n = num_vertices(mesh);
   {
     const internal::Grid_layout layout(grid.bounding_box().grown(1));
-    internal::require_memory(17. * double(layout.volume()) + 16. * double(report.solid_voxels) + 900. * double(n),
+    internal::require_memory(21. * double(layout.volume()) + 16. * double(report.solid_voxels) + 900. * double(n),
                              limit, layout, caller, "the distance fields of a grid");
   }
   const internal::Solid_voxels solid(grid);
+  Voxel_distance_field depth = distance_transform(grid, np); // freed once the centres are found
   own_grid = Dense_voxel_grid(); // the solid is indexed: free the grid
 
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
@@ -366,6 +369,12 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
 
   const auto triangles = internal::triangles_of(mesh, vim);
   const std::vector<internal::Vec3> normals = internal::outward_vertex_normals(cells.grid_point, triangles);
+
+  // Each vertex's centre: where it sits in the shape, which decides the bone that heats it.
+  std::vector<internal::Vec3> centres(n);
+  for(std::size_t v = 0; v < n; ++v)
+    centres[v] = internal::inscribed_ball_centre(cells.grid_point[v], normals[v], depth);
+  depth = Voxel_distance_field();
 
   // The bones in the grid, and the distance to the nearest one.
   const auto numbered = numbered_bones(skeleton);
@@ -424,13 +433,6 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
       distance[u] = internal::unreached;
   }
 
-  // Each vertex's centre: where it sits in the shape, which decides the bone that heats it.
-  std::vector<internal::Vec3> centres(n);
-  {
-    const std::vector<internal::Voxel_distance> depth = internal::depth_in_solid(solid);
-    for(std::size_t v = 0; v < n; ++v)
-      centres[v] = internal::inscribed_ball_centre(cells.grid_point[v], normals[v], solid, depth);
-  }
   internal::Heat_sources sources = finder.sources(
       [&](std::size_t v, std::uint32_t b) { return internal::distance_to_polyline(centres[v], polylines[b]); });
   for(std::size_t v = 0; v < n; ++v)
