@@ -11,7 +11,10 @@ all the vertices of the split, where the top joint of our weights is not the art
   is the parent of ours, or its child), by the kinds of the two joints: where a joint's
   boundary falls on the wrong side, and on which;
 - the vertices three or more bones away (skinning_measures.FAR_IN_JOINTS), by the pair of
-  joint names, with the character: the parts bound across the air or across a limb.
+  joint names, with the character: the parts bound across the air or across a limb;
+- the share of the vertices in detached pieces of the mesh (all but the largest set of
+  faces connected by shared vertices), and the top joint right and three or more bones away
+  there and in the largest piece.
 
 A joint's kind is read from its name (finger, hand, forearm, ...; 'other' when the name says
 nothing, as "joint12"): the artists name their joints in several conventions, so the kinds
@@ -21,6 +24,8 @@ import collections
 import os
 import re
 import sys
+
+import numpy as np
 
 import rig_benchmark as rb
 import skinning_measures as sm
@@ -43,6 +48,32 @@ def kind_of(name):
     return 'other'
 
 
+def read_obj_faces(path):
+    """The faces of an OBJ file, as lists of 0-based vertex indices."""
+    with open(path) as f:
+        return [[int(corner.split('/')[0]) - 1 for corner in line.split()[1:]] for line in f if line.startswith('f ')]
+
+
+def in_largest_piece(vertices, faces):
+    """Per vertex, whether it is in the largest set of faces connected by shared vertices."""
+    parent = list(range(vertices))
+
+    def root(v):
+        while parent[v] != v:
+            parent[v] = parent[parent[v]]
+            v = parent[v]
+        return v
+
+    for face in faces:
+        for a, b in zip(face, face[1:]):
+            ra, rb_ = root(a), root(b)
+            if ra != rb_:
+                parent[max(ra, rb_)] = min(ra, rb_)
+    roots = np.array([root(v) for v in range(vertices)])
+    largest = collections.Counter(roots.tolist()).most_common(1)[0][0]
+    return roots == largest
+
+
 def main(argv):
     if len(argv) < 3:
         sys.exit(__doc__)
@@ -50,6 +81,7 @@ def main(argv):
     top = int(argv[argv.index('--top') + 1]) if '--top' in argv else 20
     ids = [line.strip() for line in open(os.path.join(data, split + '_final.txt')) if line.strip()]
     one_away, far = collections.Counter(), collections.Counter()
+    by_piece = collections.Counter()  # (in the largest piece, 'vertices' / 'right' / 'far')
     vertices = 0
     for i in ids:
         report = os.path.join(out, i + '_weights.json')
@@ -59,8 +91,13 @@ def main(argv):
         rig = sm.ArtistRig(os.path.join(data, split, i + '_rig.txt'), len(mesh))
         ours = sm.weights_from_bones(report, rig)[0]
         vertices += len(mesh)
-        for artist, mine in zip(rig.weights.argmax(1), ours.argmax(1)):
+        main_piece = in_largest_piece(len(mesh), read_obj_faces(os.path.join(data, split, i + '.obj')))
+        for v, (artist, mine) in enumerate(zip(rig.weights.argmax(1), ours.argmax(1))):
             hops = rig.hops[artist][mine]
+            piece = bool(main_piece[v])
+            by_piece[(piece, 'vertices')] += 1
+            by_piece[(piece, 'right')] += artist == mine
+            by_piece[(piece, 'far')] += hops >= sm.FAR_IN_JOINTS
             if hops == 1:
                 parent_is_artists = rig.parent[mine] == artist
                 parent, child = (artist, mine) if parent_is_artists else (mine, artist)
@@ -79,6 +116,13 @@ def main(argv):
     print('%8s  %-8s %-20s %-20s %s' % ('vertices', 'id', 'artist\'s joint', 'ours', 'bones apart'))
     for (i, artist, mine, hops), count in far.most_common(top):
         print('%8d  %-8s %-20s %-20s %d' % (count, i, artist, mine, hops))
+    print('detached pieces: %.4f of the vertices, %.4f of those %d or more bones away'
+          % (by_piece[(False, 'vertices')] / vertices,
+             by_piece[(False, 'far')] / max(1, by_piece[(False, 'far')] + by_piece[(True, 'far')]), sm.FAR_IN_JOINTS))
+    for piece, label in ((True, 'the largest piece'), (False, 'detached pieces')):
+        count = max(1, by_piece[(piece, 'vertices')])
+        print('  %-18s top joint right %.4f, %d or more bones away %.4f'
+              % (label, by_piece[(piece, 'right')] / count, sm.FAR_IN_JOINTS, by_piece[(piece, 'far')] / count))
 
 
 if __name__ == '__main__':
