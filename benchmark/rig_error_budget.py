@@ -27,7 +27,9 @@ in rig_benchmark.py. Prints means over the characters:
 - what simple rules built on those measures give: dropping the end chains thinner than a
   fraction of the largest radius, or shorter than a fraction of the extent, or that leave a
   junction 3 or more junctions deep; trimming the joints of a tip thinner than a fraction of
-  the largest radius.
+  the largest radius;
+- the tail: how much of the mean CD-J2J the 10, 20 and 30 worst characters carry, the mean
+  without them, and the 20 worst with their CD-J2J.
 """
 import collections
 import json
@@ -169,10 +171,12 @@ def main(argv):
     by_kind = collections.defaultdict(lambda: np.zeros(2))  # (joints, part of the first half) summed
     features, labels = collections.defaultdict(list), []
     results = collections.defaultdict(list)
+    rigged = []
     for i in ids:
         positions, bones, radii, parents, artist_joints, artist_bones = character(data, split, out, i)
         if len(positions) == 0:
             continue
+        rigged.append(i)
         a0, a1 = rb.segments(artist_joints, artist_bones)
         o0, o1 = rb.segments(positions, bones)
         ours_to_artists = rb.distances_to_points(positions, artist_joints)
@@ -242,6 +246,17 @@ def main(argv):
         values = np.array(values)
         print('%-42s %8.4f %8.4f %8.4f %7d' % (name, values[:, 0].mean(), np.median(values[:, 0]),
                                                 values[:, 1].mean(), np.median(values[:, 2])))
+    print_tail(rigged, np.array(results['as rigged'])[:, 0])
+
+
+def print_tail(ids, cd_j2j):
+    """How much of the mean CD-J2J the worst characters carry, and which they are."""
+    worst = np.argsort(-cd_j2j, kind='stable')
+    for count in (10, 20, 30):
+        print('the %d worst characters: CD-J2J %.4f on average, %.3f of the sum; the mean without them %.4f'
+              % (count, cd_j2j[worst[:count]].mean(), cd_j2j[worst[:count]].sum() / cd_j2j.sum(),
+                 cd_j2j[worst[count:]].mean()))
+    print('the 20 worst: ' + ' '.join('%s %.3f' % (ids[k], cd_j2j[k]) for k in worst[:20]))
 
 
 if __name__ == '__main__':
