@@ -16,10 +16,13 @@ axis-aligned extent:
           joint and the reverse;
   CD-J2B  the same from joints to the nearest bone (segment) of the other rig;
   CD-B2B  the same between points spaced 0.005 along the bones of both rigs;
-the joint counts (ours, the artist's), the characters with fewer than 4 joints, a missing
-limb (an artist's end joint farther than 0.05 from every bone of ours) and an extra branch
-(an end joint of ours farther than 0.05 from every bone of the artist's). A rig without bones
-counts its joints as bones of length 0.
+the joint counts (ours, the artist's), the characters with fewer than 4 joints, and the limb
+measures (is every limb reached?): the share of the artists' chain ends (leaf joints) within
+0.1 of one of our bones (recall), the share of our chain ends within 0.1 of one of the
+artists' bones (precision), the characters with an artist chain end farther than 0.15 from
+all our bones (a limb without a bone), and the recall by the family of the artist's joint
+name (foot/toe, hand, arm, leg, ear, tail, head, face: mouth, eyes, jaw, hair; other). A
+rig without bones counts its joints as bones of length 0.
 
 With --skinning, the skin weights are measured instead, with the artist's skeleton given
 (`skeletonize MESH --skeleton SKELETON.json --weights`) and the artist's weights as the
@@ -41,6 +44,7 @@ a rig has should not depend on the grid.
 import concurrent.futures
 import json
 import os
+import re
 import statistics
 import subprocess
 import sys
@@ -51,6 +55,14 @@ import numpy as np
 import skinning_measures
 
 LIMB_DISTANCE = 0.05  # an end joint this far from every bone of the other rig: a limb one rig lacks
+LIMB_REACH = 0.1      # a chain end within this of the other rig's bones is reached (the limb measures)
+LIMB_MISSED = 0.15    # an artist chain end farther than this from all our bones: a limb without a bone
+# The families of the artists' leaf joint names, the first that matches (lower case, letters only).
+LIMB_FAMILIES = [('face', 'mouth|eye|jaw|hair|kuchi|tongue|teeth|lip|brow|nose'),
+                 ('foot/toe', 'toe|foot|feet|ankle'),
+                 ('hand', 'hand|finger|thumb|index|middle|ring|pinky|wrist|yubi'),
+                 ('ear', 'ear'), ('tail', 'tail'), ('head', 'head|neck'),
+                 ('arm', 'arm|elbow|shoulder|clavicle'), ('leg', 'leg|knee|thigh|calf')]
 SAMPLE_STEP = 0.005   # spacing of the points of CD-B2B
 
 
@@ -68,6 +80,12 @@ def mesh_extent(obj_path):
 
 def artist_rig(rig_path):
     """Joint positions (n x 3) and bones (pairs of joint indices) of a RigNet rig file."""
+    positions, bones, _ = artist_rig_with_names(rig_path)
+    return positions, bones
+
+
+def artist_rig_with_names(rig_path):
+    """artist_rig(), and the joints' names."""
     index, positions, bones = {}, [], []
     with open(rig_path) as f:
         for line in f:
@@ -77,7 +95,13 @@ def artist_rig(rig_path):
                 positions.append([float(x) for x in words[2:5]])
             elif words and words[0] == 'hier':
                 bones.append((words[1], words[2]))
-    return np.array(positions, float).reshape(-1, 3), [(index[a], index[b]) for a, b in bones]
+    return (np.array(positions, float).reshape(-1, 3), [(index[a], index[b]) for a, b in bones],
+            sorted(index, key=index.get))
+
+
+def limb_family(joint_name):
+    letters = re.sub('[^a-z]', '', joint_name.lower())
+    return next((family for family, pattern in LIMB_FAMILIES if re.search(pattern, letters)), 'other')
 
 
 def our_rig(json_path):
@@ -126,19 +150,34 @@ def end_joints(joints, bones):
     return joints[degree == 1] if bones else joints
 
 
+def leaf_joint_mask(joints, bones):
+    """The joints that are no bone's parent (bones go from parent to child)."""
+    leaf = np.ones(len(joints), bool)
+    for parent, _ in bones:
+        leaf[parent] = False
+    return leaf
+
+
+def limb_measures(ours, our_ends, artists, artist_names):
+    """Distances from the artist's leaf joints to our bones (with the leaves' name families) and
+    from our end joints (a mask over our joints) to the artist's bones."""
+    (oj, ob), (aj, ab) = ours, artists
+    leaves = leaf_joint_mask(aj, ab)
+    return {'artist_ends': distances_to_segments(aj[leaves], *segments(oj, ob)).tolist(),
+            'artist_end_families': [limb_family(n) for n, leaf in zip(artist_names, leaves) if leaf],
+            'our_ends': distances_to_segments(oj[our_ends], *segments(aj, ab)).tolist()}
+
+
 def measures(ours, artists):
     (oj, ob), (aj, ab) = ours, artists
     o0, o1 = segments(oj, ob)
     a0, a1 = segments(aj, ab)
     op, ap = points_along(o0, o1, SAMPLE_STEP), points_along(a0, a1, SAMPLE_STEP)
-    missing = distances_to_segments(end_joints(aj, ab), o0, o1)
-    extra = distances_to_segments(end_joints(oj, ob), a0, a1)
     return {
         'cd_j2j': 0.5 * (distances_to_points(oj, aj).mean() + distances_to_points(aj, oj).mean()),
         'cd_j2b': 0.5 * (distances_to_segments(oj, a0, a1).mean() + distances_to_segments(aj, o0, o1).mean()),
         'cd_b2b': 0.5 * (distances_to_points(op, ap).mean() + distances_to_points(ap, op).mean()),
         'joints': len(oj), 'artist_joints': len(aj),
-        'missing_limbs': int((missing > LIMB_DISTANCE).sum()), 'extra_branches': int((extra > LIMB_DISTANCE).sum()),
     }
 
 
@@ -151,12 +190,15 @@ def score(data, split, out, ids):
             rows.append({'id': i, 'failed': True})
             continue
         scale = 1.0 / mesh_extent(mesh)
-        oj, ob = our_rig(result)
-        aj, ab = artist_rig(os.path.join(data, split, i + '_rig.txt'))
+        control = json.load(open(result))['control']
+        oj, ob = rig_of_control(control)
+        our_ends = np.array([j['kind'] == 'end' for j in control['joints']], bool)
+        aj, ab, names = artist_rig_with_names(os.path.join(data, split, i + '_rig.txt'))
         if len(oj) == 0:
             rows.append({'id': i, 'failed': True})
             continue
         row = measures((oj * scale, ob), (aj * scale, ab))
+        row.update(limb_measures((oj * scale, ob), our_ends, (aj * scale, ab), names))
         row['id'] = i
         rows.append(row)
     return rows
@@ -171,11 +213,28 @@ def summary(rows):
         values = [r[key] for r in good]
         lines.append('%-14s mean %.4f  median %.4f' % (key, statistics.mean(values), statistics.median(values)))
     lines.append('fewer than 4 joints: %d' % sum(r['joints'] < 4 for r in good))
-    lines.append('with a missing limb: %d (%d limbs)' % (sum(r['missing_limbs'] > 0 for r in good),
-                                                       sum(r['missing_limbs'] for r in good)))
-    lines.append('with an extra branch: %d (%d branches)' % (sum(r['extra_branches'] > 0 for r in good),
-                                                           sum(r['extra_branches'] for r in good)))
+    lines += limb_summary(good)
     return '\n'.join(lines)
+
+
+def limb_summary(rows):
+    artist_ends = np.concatenate([r['artist_ends'] for r in rows])
+    families = np.concatenate([r['artist_end_families'] for r in rows])
+    our_ends = np.concatenate([r['our_ends'] for r in rows])
+    missed = sum(max(r['artist_ends'], default=0) > LIMB_MISSED for r in rows)
+    lines = ['limbs: artists\' chain ends within %g of our bones %.1f %% (%d of %d); our chain ends within %g of '
+             'the artists\' bones %.1f %% (%d of %d); characters with an artist chain end farther than %g: %d '
+             '(%.1f %%)' % (LIMB_REACH, 100 * (artist_ends <= LIMB_REACH).mean(), (artist_ends <= LIMB_REACH).sum(),
+                            len(artist_ends), LIMB_REACH, 100 * (our_ends <= LIMB_REACH).mean(),
+                            (our_ends <= LIMB_REACH).sum(), len(our_ends), LIMB_MISSED, missed,
+                            100.0 * missed / len(rows))]
+    by_family = []
+    for family in [f for f, _ in LIMB_FAMILIES] + ['other']:
+        reached = artist_ends[families == family] <= LIMB_REACH
+        if len(reached):
+            by_family.append('%s %.1f %% (%d of %d)' % (family, 100 * reached.mean(), reached.sum(), len(reached)))
+    lines.append('limbs reached by family: ' + ', '.join(by_family))
+    return lines
 
 
 def main(argv):
