@@ -1,0 +1,250 @@
+# SPDX-License-Identifier: LGPL-3.0-or-later
+"""The rig's layout from skeletonize's control skeleton, without Blender (numpy only): the
+chains between junctions, the mirror plane of the joints, left/right pairs of chains, and
+names a rigger can read (spine, leg, arm, head, tail where the geometry says so, chain_N
+elsewhere), and the parent of every bone."""
+
+import numpy as np
+
+# A joint matches its mirror image when they are closer than this fraction of the
+# character's longest extent (the joints sit on voxels: a few voxels of 64 apart).
+MIRROR_TOLERANCE = 0.05
+# A direction is "up" or "down" when its cosine with the up axis is beyond this.
+STEEP = 0.5
+
+
+class Chain:
+    """Joints from a root or a junction to the next junction or end; `bones` index the
+    skeleton's bones along it."""
+
+    def __init__(self, joints, bones):
+        self.joints, self.bones = joints, bones
+        self.label, self.side, self.partner = None, "", None
+
+
+def children_of(parents):
+    children = [[] for _ in parents]
+    for j, p in enumerate(parents):
+        if p >= 0:
+            children[p].append(j)
+    return children
+
+
+def split_into_chains(parents, bones):
+    """Chains in the order of a walk from the roots (a parent's chains before its children's)."""
+    bone_of_child = {c: b for b, (p, c) in enumerate(bones)}
+    children = children_of(parents)
+    chains, starts = [], [j for j, p in enumerate(parents) if p < 0]
+    while starts:
+        start = starts.pop(0)
+        for child in children[start]:
+            joints = [start, child]
+            while len(children[joints[-1]]) == 1:
+                joints.append(children[joints[-1]][0])
+            if joints[-1] != start and children[joints[-1]]:
+                starts.append(joints[-1])
+            chains.append(Chain(joints, [bone_of_child[j] for j in joints[1:]]))
+    return chains
+
+
+def mirror(points, normal, offset):
+    return points - 2.0 * np.outer(points @ normal - offset, normal)
+
+
+def mirror_matches(points, normal, offset, tolerance):
+    """For each joint, the joint nearest its mirror image if it is within the tolerance (itself
+    for a joint on the plane), else -1."""
+    images = mirror(points, normal, offset)
+    distances = np.linalg.norm(images[:, None, :] - points[None, :, :], axis=2)
+    nearest = distances.argmin(axis=1)
+    return np.where(distances[np.arange(len(points)), nearest] <= tolerance, nearest, -1)
+
+
+def find_mirror_plane(joints, vertices, tolerance):
+    """The plane (unit normal, offset) across which the most joints off it have a mirror
+    image among the joints: first x = const (Blender's X-mirror), then the vertices'
+    principal planes. None when no joint off the plane has one."""
+    centre = 0.5 * (vertices.min(axis=0) + vertices.max(axis=0))
+    centred = vertices - vertices.mean(axis=0)
+    _, _, axes = np.linalg.svd(centred[:: max(1, len(centred) // 20000)], full_matrices=False)
+    candidates = [np.array([1.0, 0, 0]), np.array([0, 1.0, 0]), np.array([0, 0, 1.0])] + list(axes)
+    best, best_count = None, 0
+    for normal in candidates:
+        normal = normal / np.linalg.norm(normal)
+        if normal[np.argmax(np.abs(normal))] < 0:
+            normal = -normal  # the positive side is the left (+X, as Blender names it)
+        for offset in (centre @ normal, np.median(joints @ normal)):
+            off_plane = np.abs(joints @ normal - offset) > tolerance
+            matches = mirror_matches(joints, normal, offset, tolerance)
+            count = int(np.sum(off_plane & (matches >= 0)))
+            # Off-plane joints without an image count against the plane.
+            count -= int(np.sum(off_plane & (matches < 0)))
+            if count > best_count:
+                best, best_count = (normal, offset), count
+    return best
+
+
+def resample(polyline, count=16):
+    """`count` points at equal steps of arc length along the polyline."""
+    steps = np.linalg.norm(np.diff(polyline, axis=0), axis=1)
+    along = np.concatenate([[0.0], np.cumsum(steps)])
+    if along[-1] <= 0:
+        return np.repeat(polyline[:1], count, axis=0)
+    targets = np.linspace(0.0, along[-1], count)
+    return np.stack([np.interp(targets, along, polyline[:, k]) for k in range(3)], axis=1)
+
+
+def pair_chains(chains, joints, plane, tolerance):
+    """Sets side ".L"/".R" and partner on chains that are each other's mirror images: the
+    mirrored polyline of one within the tolerance of the other at every step of arc length
+    (the voxel grid may give the two sides a different number of joints), +normal being the
+    left. Chains on the plane are central."""
+    if plane is None:
+        return
+    normal, offset = plane
+    images = mirror(joints, normal, offset)
+    mirrored = [resample(images[c.joints]) for c in chains]
+    own = [resample(joints[c.joints]) for c in chains]
+    for a, chain in enumerate(chains):
+        if chain.partner is not None:
+            continue
+        signed = joints[chain.joints[1:]] @ normal - offset
+        if np.all(np.abs(signed) <= tolerance):
+            continue  # on the plane: a central chain
+        best, best_error = None, tolerance
+        for b, other in enumerate(chains):
+            if b == a or other.partner is not None:
+                continue
+            error = np.max(np.linalg.norm(mirrored[a] - own[b], axis=1))
+            # Equal numbers of joints first: then every bone has its mirror.
+            error *= 1.0 if len(other.joints) == len(chain.joints) else 1.5
+            if error <= best_error:
+                best, best_error = b, error
+        if best is not None:
+            left = np.mean(signed) > 0
+            chain.partner, chains[best].partner = best, a
+            chain.side, chains[best].side = (".L", ".R") if left else (".R", ".L")
+
+
+def label_chains(chains, joints, radii, vertices, up, plane, children):
+    """A label per chain from where it goes relative to the up axis and the mirror plane:
+    leg (down to the ground), arm (a side chain reaching sideways), spine (up or along the
+    body, with more chains after it), head (a central end chain going up, or forward and
+    thick), tail (a thin central end chain); chain_N otherwise."""
+    heights = vertices @ up
+    bottom, height = heights.min(), max(heights.max() - heights.min(), 1e-12)
+    thickest = max(radii.max(), 1e-12)
+    for i, chain in enumerate(chains):
+        start, end = joints[chain.joints[0]], joints[chain.joints[-1]]
+        direction = end - start
+        length = np.linalg.norm(direction)
+        rise = (direction @ up) / length if length > 0 else 0.0
+        reaches_ground = (end @ up - bottom) < 0.25 * height
+        is_end = not children[chain.joints[-1]]
+        thickness = np.mean(radii[chain.joints[1:]]) / thickest
+        sideways = plane is not None and length > 0 and abs(direction @ plane[0]) / length > STEEP
+        label = None
+        if rise < -STEEP and reaches_ground:
+            label = "leg"
+        elif chain.side:
+            label = "arm" if sideways else None
+        elif not is_end and rise > -STEEP:
+            label = "spine"
+        elif is_end and rise > STEEP:
+            label = "head"
+        elif is_end and thickness < 0.35:
+            label = "tail"
+        elif is_end:
+            label = "head"
+        chain.label = label
+    # Labels taken once per side: the others are numbered (leg, leg_2, ...), neutral ones too.
+    used, counters = set(), {}
+    for i, chain in enumerate(chains):
+        if chain.partner is not None and chain.partner < i:
+            chain.label = chains[chain.partner].label
+            continue
+        base = chain.label or "chain"
+        counters[base] = counters.get(base, 0) + 1
+        label = base if chain.label and counters[base] == 1 else "%s_%d" % (base, counters[base])
+        while label in used:
+            counters[base] += 1
+            label = "%s_%d" % (base, counters[base])
+        used.add(label)
+        chain.label = label
+
+
+def bone_names(chains, bone_count):
+    names = [None] * bone_count
+    for chain in chains:
+        for k, bone in enumerate(chain.bones):
+            number = "" if len(chain.bones) == 1 else "_%02d" % (k + 1)
+            names[bone] = chain.label + number + chain.side
+    return names
+
+
+def distance_to_segment(point, a, b):
+    ab = b - a
+    t = 0.0 if not ab @ ab else np.clip((point - a) @ ab / (ab @ ab), 0.0, 1.0)
+    return np.linalg.norm(point - (a + t * ab))
+
+
+def bone_parents(chains, joints, parents, bones, radii):
+    """For each bone, (parent bone or -1, connected): along a chain and across a junction the
+    bone ending at its head joint, connected; the bones leaving a root hang from the first
+    bone of the root's thickest chain (the spine or hips), unconnected; the root bone of each
+    further piece hangs from the nearest bone of the largest piece, unconnected."""
+    bone_ending_at = {c: b for b, (p, c) in enumerate(bones)}
+    result = [(-1, False)] * len(bones)
+    for b, (p, c) in enumerate(bones):
+        if p in bone_ending_at:
+            result[b] = (bone_ending_at[p], True)
+    roots = [j for j, p in enumerate(parents) if p < 0]
+    piece_roots = {}
+    for chain in chains:
+        if chain.joints[0] in roots:
+            piece_roots.setdefault(chain.joints[0], []).append(chain)
+    top_bones = {}
+    for root, root_chains in piece_roots.items():
+        main = max(root_chains, key=lambda ch: (ch.label.startswith("spine"), np.mean(radii[ch.joints[1:]])))
+        top_bones[root] = main.bones[0]
+        for chain in root_chains:
+            if chain is not main:
+                result[chain.bones[0]] = (main.bones[0], False)
+    if len(top_bones) > 1:
+        piece = {}
+        for j in range(len(parents)):
+            r = j
+            while parents[r] >= 0:
+                r = parents[r]
+            piece[j] = r
+        sizes = {r: sum(1 for j in piece if piece[j] == r) for r in top_bones}
+        largest = max(top_bones, key=lambda r: sizes[r])
+        main_bones = [b for b, (p, c) in enumerate(bones) if piece[c] == largest]
+        for root, top in top_bones.items():
+            if root == largest:
+                continue
+            nearest = min(main_bones, key=lambda b: distance_to_segment(joints[root], joints[bones[b][0]],
+                                                                           joints[bones[b][1]]))
+            result[top] = (nearest, False)
+    return result
+
+
+class Layout:
+    """Names, parents and the mirror plane of a control skeleton in world space."""
+
+    def __init__(self, control, vertices, up=(0.0, 0.0, 1.0)):
+        joints = control["joints"]
+        self.positions = np.array([j["position"] for j in joints], dtype=np.float64)
+        self.radii = np.array([j["radius"] for j in joints], dtype=np.float64)
+        self.parents = [int(j["parent"]) for j in joints]
+        self.bones = [tuple(b) for b in control["bones"]]
+        self.up = np.asarray(up, dtype=np.float64)
+        extent = vertices.max(axis=0) - vertices.min(axis=0)
+        self.tolerance = MIRROR_TOLERANCE * max(float(extent.max()), 1e-12)
+        self.plane = find_mirror_plane(self.positions, vertices, self.tolerance)
+        self.chains = split_into_chains(self.parents, self.bones)
+        pair_chains(self.chains, self.positions, self.plane, self.tolerance)
+        label_chains(self.chains, self.positions, self.radii, vertices, self.up, self.plane,
+                     children_of(self.parents))
+        self.names = bone_names(self.chains, len(self.bones))
+        self.parent_of_bone = bone_parents(self.chains, self.positions, self.parents, self.bones, self.radii)

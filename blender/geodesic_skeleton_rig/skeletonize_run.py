@@ -1,0 +1,184 @@
+# SPDX-License-Identifier: LGPL-3.0-or-later
+"""Runs the package's `skeletonize` program on the selected meshes: finds the program, writes
+their evaluated geometry in world space as one triangle mesh (ASCII OFF, which skeletonize
+reads with its fast reader), runs `skeletonize --weights` and reads its JSON report."""
+
+import json
+import os
+import shutil
+import stat
+import subprocess
+import tempfile
+
+import numpy as np
+
+
+class RigError(Exception):
+    """A problem to show in Blender's report (no traceback): the message says what to do."""
+
+
+PROGRAM_NAME = "skeletonize"
+
+
+def bundled_program():
+    """The skeletonize program that the add-on's zip carries (bin/skeletonize), or None."""
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "bin", PROGRAM_NAME)
+    return path if os.path.isfile(path) else None
+
+
+def make_executable(path):
+    # Blender installs an add-on zip with Python's zipfile, which drops the files' modes.
+    mode = os.stat(path).st_mode
+    if not mode & stat.S_IXUSR:
+        try:
+            os.chmod(path, mode | stat.S_IXUSR | stat.S_IXGRP | stat.S_IXOTH)
+        except OSError:
+            pass
+
+
+def find_program(preferred_path=""):
+    """The program to run: the bundled one, else the preferences' path, else `skeletonize` on
+    PATH. Raises RigError naming the places looked in."""
+    bundled = bundled_program()
+    if bundled:
+        make_executable(bundled)
+        if os.access(bundled, os.X_OK):
+            return bundled
+    if preferred_path:
+        path = os.path.abspath(os.path.expanduser(preferred_path))
+        if os.path.isfile(path) and os.access(path, os.X_OK):
+            return path
+    on_path = shutil.which(PROGRAM_NAME)
+    if on_path:
+        return on_path
+    looked = "the add-on's bin folder"
+    if preferred_path:
+        looked += ", " + preferred_path
+    raise RigError("The skeletonize program was not found (looked in " + looked + " and on PATH): "
+                   "install the add-on's zip built with the package, or set the program's path in "
+                   "Preferences > Add-ons > Geodesic Skeleton Rig")
+
+
+class Character:
+    """The selected meshes as one triangle mesh in world space: `points` (n x 3, float64),
+    `triangles` (m x 3, int), and for each object the range of its vertices in `points`."""
+
+    def __init__(self):
+        self.points = np.zeros((0, 3))
+        self.triangles = np.zeros((0, 3), dtype=np.int64)
+        self.objects = []  # (object, first vertex, vertex count, evaluated count == mesh count)
+
+
+def evaluated_world_geometry(obj, depsgraph):
+    """The object's evaluated mesh (its modifiers applied) in world space: vertices (n x 3) and
+    triangles (the loop triangles: n-gons triangulated for the export only)."""
+    evaluated = obj.evaluated_get(depsgraph)
+    mesh = evaluated.to_mesh()
+    try:
+        n = len(mesh.vertices)
+        co = np.empty(3 * n, dtype=np.float32)
+        mesh.vertices.foreach_get("co", co)
+        mesh.calc_loop_triangles()
+        tris = np.empty(3 * len(mesh.loop_triangles), dtype=np.int32)
+        mesh.loop_triangles.foreach_get("vertices", tris)
+    finally:
+        evaluated.to_mesh_clear()
+    matrix = np.array(obj.matrix_world, dtype=np.float64)
+    world = co.reshape(-1, 3).astype(np.float64) @ matrix[:3, :3].T + matrix[:3, 3]
+    return world, tris.reshape(-1, 3)
+
+
+def gather_character(objects, depsgraph):
+    character = Character()
+    points, triangles, first = [], [], 0
+    for obj in objects:
+        world, tris = evaluated_world_geometry(obj, depsgraph)
+        points.append(world)
+        triangles.append(tris.astype(np.int64) + first)
+        character.objects.append((obj, first, len(world), len(world) == len(obj.data.vertices)))
+        first += len(world)
+    character.points = np.concatenate(points) if points else character.points
+    character.triangles = np.concatenate(triangles) if triangles else character.triangles
+    if len(character.triangles) == 0:
+        raise RigError("The selected meshes have no faces: skeletonize needs a surface that encloses a volume")
+    if not np.all(np.isfinite(character.points)):
+        raise RigError("A selected mesh has a vertex with a non-finite coordinate (NaN or infinite)")
+    return character
+
+
+def write_off(path, points, triangles):
+    """ASCII OFF, 9 significant digits (float32 exactly): one `%` formatting for all numbers,
+    which is many times faster than numpy.savetxt's loop over rows."""
+    with open(path, "w") as out:
+        out.write("OFF\n%d %d 0\n" % (len(points), len(triangles)))
+        out.write(("%.9g %.9g %.9g\n" * len(points)) % tuple(points.ravel().tolist()))
+        out.write(("3 %d %d %d\n" * len(triangles)) % tuple(triangles.ravel().tolist()))
+
+
+def skeletonize_arguments(settings):
+    """The command-line options for the operator's settings (a dict of option -> value)."""
+    arguments = []
+    for option, value in settings.items():
+        if isinstance(value, bool):
+            if value:
+                arguments.append(option)
+        elif isinstance(value, float):
+            arguments += [option, "%.6g" % value]
+        else:
+            arguments += [option, str(value)]
+    return arguments
+
+
+def error_message(stderr, mesh_path, returncode):
+    """skeletonize's `skeletonize: error: FILE: problem` line, the temporary file's name
+    replaced by what the user knows it as."""
+    lines = [line.strip() for line in stderr.splitlines() if line.strip()]
+    for line in lines:
+        if "error:" in line:
+            message = line.split("error:", 1)[1].strip()
+            message = message.replace(mesh_path + ": ", "").replace(mesh_path, "the selected meshes")
+            return "skeletonize could not rig the selected meshes: " + message
+    if returncode < 0:
+        return "skeletonize stopped with signal %d (a crash): please report it with the mesh" % -returncode
+    tail = (": " + lines[-1]) if lines else " and printed no message"
+    return "skeletonize failed (exit code %d)%s" % (returncode, tail)
+
+
+def run_skeletonize(program, character, settings, progress=None):
+    """Runs `skeletonize MESH --weights -o REPORT.json` with the settings; returns the report
+    (a dict). Raises RigError with skeletonize's message when it fails."""
+    with tempfile.TemporaryDirectory(prefix="geodesic_skeleton_rig_") as folder:
+        mesh_path = os.path.join(folder, "character.off")
+        report_path = os.path.join(folder, "rig.json")
+        write_off(mesh_path, character.points, character.triangles)
+        if progress:
+            progress(0.2, "skeletonize")
+        command = [program, mesh_path, "--weights", "-o", report_path] + skeletonize_arguments(settings)
+        try:
+            run = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                 universal_newlines=True)
+        except OSError as e:
+            raise RigError("Cannot run " + program + ": " + e.strerror)
+        if run.returncode != 0:
+            raise RigError(error_message(run.stderr, mesh_path, run.returncode))
+        if progress:
+            progress(0.8, "reading the rig")
+        try:
+            with open(report_path) as f:
+                report = json.load(f)
+            check_report(report, len(character.points))
+        except (OSError, ValueError, KeyError, TypeError) as e:
+            raise RigError("skeletonize's report cannot be read (" + str(e) + "): is " + program +
+                           " the package's skeletonize?")
+    return report
+
+
+def check_report(report, vertex_count):
+    control = report["control"]
+    joints, bones, weights = control["joints"], control["bones"], report["weights"]
+    if not joints or not bones:
+        raise ValueError("the rig has no bones")
+    if weights["vertices"] != vertex_count:
+        raise ValueError("weights for %d vertices, %d exported" % (weights["vertices"], vertex_count))
+    if not len(weights["vertex"]) == len(weights["bone"]) == len(weights["weight"]):
+        raise ValueError("the weights' arrays differ in length")

@@ -1,0 +1,332 @@
+# SPDX-License-Identifier: LGPL-3.0-or-later
+"""The add-on in Debian's Blender, headless (CTest: blender_addon_rigs_selected_meshes):
+  blender -b --factory-startup --python-exit-code 1 --python test_rig_addon.py -- ZIP COW.off WORK_DIR
+with BLENDER_USER_SCRIPTS and BLENDER_USER_CONFIG in WORK_DIR (the zip is installed there).
+Rigs the demo cow and a character of three objects (body, head, hat), and checks the rig,
+the weights, the deformation, what the objects keep, the .L/.R pairs and the error reports.
+Prints "test_rig_addon: OK" or "test_rig_addon: FAILED: ..."."""
+
+import math
+import os
+import shutil
+import subprocess
+import sys
+import time
+import traceback
+
+import bmesh
+import bpy
+import numpy as np
+from mathutils import Matrix, Quaternion
+
+zip_path, cow_path, work = sys.argv[sys.argv.index("--") + 1:][:3]
+ADDON = "geodesic_skeleton_rig"
+
+
+class Failure(Exception):
+    pass
+
+
+def check(condition, message):
+    if not condition:
+        raise Failure(message)
+
+
+def install_addon():
+    os.makedirs(work, exist_ok=True)
+    shutil.rmtree(os.path.join(work, "scripts"), ignore_errors=True)
+    bpy.ops.preferences.addon_install(filepath=zip_path, overwrite=True)
+    bpy.ops.preferences.addon_enable(module=ADDON)
+    module = sys.modules[ADDON]
+    where = os.path.dirname(module.__file__)
+    check(where.startswith(os.path.join(work, "scripts")), "the add-on is not the installed zip: " + where)
+    check(module.skeletonize_run.find_program() == os.path.join(where, "bin", "skeletonize"),
+          "the add-on does not run the program of its zip")
+    return module
+
+
+def read_off(path):
+    words = open(path).read().split()
+    check(words[0] == "OFF", path + " is not OFF")
+    n, m = int(words[1]), int(words[2])
+    points = np.array(words[4:4 + 3 * n], dtype=np.float64).reshape(-1, 3)
+    faces, i = [], 4 + 3 * n
+    for _ in range(m):
+        k = int(words[i])
+        faces.append([int(w) for w in words[i + 1:i + 1 + k]])
+        i += 1 + k
+    return points, faces
+
+
+def add_object(name, mesh, matrix=Matrix()):
+    """An object of the mesh, with a UV layer and a material (which the rigging must keep)."""
+    mesh.uv_layers.new(name="UVMap")
+    mesh.materials.append(bpy.data.materials.new(name + "_material"))
+    obj = bpy.data.objects.new(name, mesh)
+    obj.matrix_world = matrix
+    bpy.context.collection.objects.link(obj)
+    return obj
+
+
+def mesh_object(name, points, faces):
+    mesh = bpy.data.meshes.new(name)
+    mesh.from_pydata([tuple(p) for p in points], [], faces)
+    return add_object(name, mesh)
+
+
+def box(bm, lo, hi):
+    """A closed box (quads) from corner lo to corner hi."""
+    verts = [bm.verts.new((x, y, z)) for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])]
+    for f in ((0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)):
+        bm.faces.new([verts[i] for i in f])
+
+
+def bmesh_object(name, fill, matrix=Matrix()):
+    bm = bmesh.new()
+    fill(bm)
+    mesh = bpy.data.meshes.new(name)
+    bm.to_mesh(mesh)
+    bm.free()
+    return add_object(name, mesh, matrix)
+
+
+def make_character():
+    """A mirror-symmetric biped (x = 0): a body of overlapping boxes (torso, legs, arms), a
+    head (a unit cube scaled, turned 45 degrees about z and moved: its transform, not its
+    data) and a hat (a cone with n-gon caps): three objects, one character."""
+    def body_fill(bm):
+        box(bm, (-0.3, -0.15, 1.0), (0.3, 0.15, 1.8))
+        box(bm, (0.07, -0.1, 0.0), (0.27, 0.1, 1.1))
+        box(bm, (-0.27, -0.1, 0.0), (-0.07, 0.1, 1.1))
+        box(bm, (0.25, -0.08, 1.6), (1.0, 0.08, 1.76))
+        box(bm, (-1.0, -0.08, 1.6), (-0.25, 0.08, 1.76))
+        bmesh.ops.subdivide_edges(bm, edges=bm.edges[:], cuts=4, use_grid_fill=True)
+    head_matrix = (Matrix.Translation((0, 0, 1.97)) @ Matrix.Rotation(math.radians(45), 4, "Z")
+                   @ Matrix.Diagonal((0.13, 0.13, 0.18, 1)))
+    objects = [bmesh_object("Body", body_fill),
+               bmesh_object("Head", lambda bm: box(bm, (-1, -1, -1), (1, 1, 1)), head_matrix),
+               bmesh_object("Hat", lambda bm: bmesh.ops.create_cone(
+                   bm, cap_ends=True, segments=16, radius1=0.2, radius2=0.02, depth=0.3),
+                   Matrix.Translation((0, 0, 2.25)))]
+    return objects
+
+
+def select_only(objects):
+    for obj in bpy.context.view_layer.objects:
+        obj.select_set(False)
+    for obj in objects:
+        obj.select_set(True)
+    bpy.context.view_layer.objects.active = objects[0] if objects else None
+
+
+def snapshot():
+    """What an operator that fails must leave as it was."""
+    return (sorted(o.name for o in bpy.data.objects), len(bpy.data.armatures),
+            sorted((o.name, len(o.vertex_groups), len(o.modifiers), o.parent is None)
+                   for o in bpy.data.objects if o.type == "MESH"))
+
+
+def run_operator(**options):
+    """The operator's result set and its report text (bpy.ops raises RuntimeError with the
+    ERROR report as its message)."""
+    try:
+        return bpy.ops.object.rig_selected_meshes(**options), ""
+    except RuntimeError as e:
+        return {"CANCELLED"}, str(e)
+
+
+def expect_error(expected, what):
+    before = snapshot()
+    result, message = run_operator()
+    check(result == {"CANCELLED"}, what + ": the operator did not fail")
+    check(expected in message, what + ": the report is %r, without %r" % (message, expected))
+    check("Traceback" not in message and "Python:" not in message, what + ": a traceback: " + message)
+    check(snapshot() == before, what + ": the scene changed")
+    print("test_rig_addon: %s -> %s" % (what, message.strip()))
+
+
+def world_vertices(obj, evaluated=True):
+    if evaluated:
+        owner = obj.evaluated_get(bpy.context.evaluated_depsgraph_get())
+        mesh = owner.to_mesh()
+    else:
+        mesh = obj.data
+    co = np.empty(3 * len(mesh.vertices))
+    mesh.vertices.foreach_get("co", co)
+    if evaluated:
+        owner.to_mesh_clear()
+    m = np.array(obj.matrix_world)
+    return co.reshape(-1, 3) @ m[:3, :3].T + m[:3, 3]
+
+
+def bone_groups(obj, rig):
+    """Per vertex: {bone name: weight} over the groups named after the rig's bones."""
+    names = {g.index: g.name for g in obj.vertex_groups if g.name in rig.data.bones}
+    return [{names[e.group]: e.weight for e in v.groups if e.group in names} for v in obj.data.vertices]
+
+
+def expected_bone_count(module, objects, options):
+    """skeletonize's bones on the same geometry (the selected meshes in world space)."""
+    run = module.skeletonize_run
+    character = run.gather_character(objects, bpy.context.evaluated_depsgraph_get())
+    path = os.path.join(work, "same_mesh.off")
+    run.write_off(path, character.points, character.triangles)
+    out = subprocess.run([run.find_program(), path, "-o", os.path.join(work, "same_mesh.json")]
+                         + run.skeletonize_arguments(options), stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    check(out.returncode == 0, "skeletonize failed on the exported mesh: " + out.stderr.decode())
+    import json
+    return len(json.load(open(os.path.join(work, "same_mesh.json")))["control"]["bones"])
+
+
+def rig_and_check(module, objects, label):
+    """Runs the operator on the objects and checks everything but the deformation; returns the rig."""
+    select_only(objects)
+    kept = {o.name: (len(o.data.vertices), len(o.data.polygons), [u.name for u in o.data.uv_layers],
+                     [m.name for m in o.data.materials], o.matrix_world.copy(), world_vertices(o, False))
+            for o in objects}
+    armatures = set(bpy.data.armatures)
+    start = time.perf_counter()
+    result, message = run_operator()
+    seconds = time.perf_counter() - start
+    check(result == {"FINISHED"}, label + ": the operator failed: " + message)
+    new = [a for a in bpy.data.armatures if a not in armatures]
+    check(len(new) == 1, label + ": %d armatures made, not 1" % len(new))
+    rig = [o for o in bpy.data.objects if o.data == new[0]][0]
+    bones = expected_bone_count(module, objects, {})
+    check(len(rig.data.bones) == bones, label + ": %d bones, skeletonize has %d" % (len(rig.data.bones), bones))
+    roots = [b for b in rig.data.bones if b.parent is None]
+    check(len(roots) == 1, label + ": %d root bones, not one hierarchy" % len(roots))
+    for obj in objects:
+        n, faces, uvs, materials, matrix, points = kept[obj.name]
+        check(obj.name in bpy.data.objects, label + ": an object was renamed")
+        check((len(obj.data.vertices), len(obj.data.polygons)) == (n, faces), label + ": %s's mesh changed" % obj.name)
+        check([u.name for u in obj.data.uv_layers] == uvs, label + ": %s's UV layers changed" % obj.name)
+        check([m.name for m in obj.data.materials] == materials, label + ": %s's materials changed" % obj.name)
+        check(np.allclose(np.array(obj.matrix_world), np.array(matrix), atol=1e-6),
+              label + ": %s's transform changed" % obj.name)
+        modifiers = [m for m in obj.modifiers if m.type == "ARMATURE"]
+        check(len(modifiers) == 1 and modifiers[0].object == rig, label + ": %s is not bound to the rig" % obj.name)
+        groups = bone_groups(obj, rig)
+        unweighted = sum(1 for g in groups if not g)
+        check(unweighted == 0, label + ": %d of %s's vertices in no bone's group" % (unweighted, obj.name))
+        sums = np.array([sum(g.values()) for g in groups])
+        check(np.abs(sums - 1).max() < 1e-4, label + ": %s's weights sum to %g..%g" % (obj.name, sums.min(), sums.max()))
+        size = np.ptp(points, axis=0).max()
+        moved = np.linalg.norm(world_vertices(obj) - points, axis=1).max()
+        check(moved < 1e-5 * max(size, 1), label + ": the rest pose moves %s's vertices by %g" % (obj.name, moved))
+    print("test_rig_addon: %s: %d bones (skeletonize: %d) in %.2f s: %s" % (
+        label, len(rig.data.bones), bones, seconds, " ".join(b.name for b in rig.data.bones)))
+    return rig
+
+
+def check_pairs(rig, label, limbs):
+    """Every side chain (bones LABEL_NN.L) has its mirror (LABEL_NN.R), and the two are mirror
+    images across the armature's local x = 0: the chains' first heads and last tails within
+    a tenth of the rig's size of each other's mirror image."""
+    chains = {}
+    for bone in rig.data.bones:
+        if bone.name[-2:] in (".L", ".R"):
+            base = bone.name[:-2]
+            chain = base.rsplit("_", 1)[0] if base.rsplit("_", 1)[-1].isdigit() and len(base.rsplit("_", 1)[-1]) == 2 else base
+            chains.setdefault(chain, {}).setdefault(bone.name[-2:], []).append(bone)
+    for chain, sides in chains.items():
+        check(set(sides) == {".L", ".R"}, label + ": the chain %s has only its %s side" % (chain, list(sides)))
+        flip = np.array([-1, 1, 1])
+        left, right = sides[".L"], sides[".R"]
+        gap = max(np.linalg.norm(np.array(left[0].head_local) * flip - np.array(right[0].head_local)),
+                  np.linalg.norm(np.array(left[-1].tail_local) * flip - np.array(right[-1].tail_local)))
+        check(gap < 0.1 * rig.dimensions.length, label + ": the chain %s.L and its mirror are %g apart" % (chain, gap))
+        check(all(b.head_local.x > 0 for b in left[1:]) and all(b.head_local.x < 0 for b in right[1:]),
+              label + ": the chain %s.L is not on the left (+x)" % chain)
+    for limb in limbs:
+        check(any(c.startswith(limb) for c in chains), label + ": no %s.L/.R pair, only %s" % (limb, sorted(chains)))
+    print("test_rig_addon: %s: left/right pairs %s" % (label, " ".join(sorted(chains))))
+
+
+def turn_bone_and_check(rig, objects, bone_name, still_prefix, label, still_objects=()):
+    """Turning `bone_name` by 40 degrees moves the vertices it and its chain carry, and not the
+    vertices weighted only to bones named `still_prefix...` or of `still_objects`."""
+    check(bone_name in rig.pose.bones, label + ": no bone " + bone_name + " in " + ", ".join(rig.pose.bones.keys()))
+    before = {o.name: world_vertices(o) for o in objects}
+    pose_bone = rig.pose.bones[bone_name]
+    pose_bone.rotation_mode = "QUATERNION"
+    pose_bone.rotation_quaternion = Quaternion((1, 0, 0), math.radians(40))
+    bpy.context.view_layer.update()
+    carried = {bone_name} | {b.name for b in rig.data.bones[bone_name].children_recursive}
+    moved_leg, moved_still = [], []
+    for obj in objects:
+        shift = np.linalg.norm(world_vertices(obj) - before[obj.name], axis=1)
+        groups = bone_groups(obj, rig)
+        for i, g in enumerate(groups):
+            if sum(w for b, w in g.items() if b in carried) > 0.5:
+                moved_leg.append(shift[i])
+            if obj in still_objects or all(b.startswith(still_prefix) for b in g):
+                moved_still.append(shift[i])
+    size = rig.dimensions.length
+    check(len(moved_leg) > 10 and np.median(moved_leg) > 0.01 * size,
+          label + ": turning %s moves its %d vertices by a median %g" % (bone_name, len(moved_leg),
+                                                                         np.median(moved_leg) if moved_leg else 0))
+    check(len(moved_still) > 10 and max(moved_still) < 1e-6 * size,
+          label + ": turning %s moves the %s vertices by %g" % (bone_name, still_prefix, max(moved_still, default=0)))
+    pose_bone.rotation_quaternion = Quaternion()
+    bpy.context.view_layer.update()
+    print("test_rig_addon: %s: turning %s moves %d vertices (median %.3g), %d head vertices stay" % (
+        label, bone_name, len(moved_leg), np.median(moved_leg), len(moved_still)))
+
+
+def main():
+    start = time.perf_counter()
+    module = install_addon()
+    bpy.ops.object.select_all(action="SELECT")
+    bpy.ops.object.delete()
+
+    # The demo cow (y up in the file; Blender's z up), alone.
+    points, faces = read_off(cow_path)
+    cow = mesh_object("Cow", np.stack([points[:, 0], -points[:, 2], points[:, 1]], axis=1), faces)
+    cow_rig = rig_and_check(module, [cow], "cow")
+    check_pairs(cow_rig, "cow", ["leg"])
+    legs = sorted(n for n in cow_rig.data.bones.keys() if n.startswith("leg") and n.endswith("_01.L"))
+    check(legs, "cow: no leg chain")
+    turn_bone_and_check(cow_rig, [cow], legs[0], "head", "cow")
+
+    # A character of three objects: body (legs and arms), head, hat.
+    character = make_character()
+    rig = rig_and_check(module, character, "character")
+    check_pairs(rig, "character", ["leg", "arm"])
+    turn_bone_and_check(rig, character, "leg_01.L", "head", "character", still_objects=character[1:])
+
+    # The errors: each with its report, the scene unchanged.
+    select_only([])
+    expect_error("Select one or more mesh objects", "no mesh selected")
+    plane = bmesh_object("Sheet", lambda bm: bmesh.ops.create_grid(bm, x_segments=4, y_segments=4, size=1))
+    select_only([plane])
+    expect_error("encloses no volume", "a mesh with no volume")
+    select_only([cow])
+    prefs = bpy.context.preferences.addons[ADDON].preferences
+    bundled = module.skeletonize_run.bundled_program()
+    os.rename(bundled, bundled + ".away")
+    saved_path = os.environ.get("PATH", "")
+    try:
+        os.environ["PATH"] = "/usr/bin:/bin"
+        prefs.program_path = os.path.join(work, "no_such_program")
+        expect_error("skeletonize program was not found", "a missing program")
+        failing = os.path.join(work, "failing_program.sh")
+        with open(failing, "w") as f:
+            f.write("#!/bin/sh\necho 'out of memory' >&2\nexit 3\n")
+        os.chmod(failing, 0o755)
+        prefs.program_path = failing
+        expect_error("skeletonize failed (exit code 3): out of memory", "a failed run")
+    finally:
+        os.rename(bundled + ".away", bundled)
+        os.environ["PATH"] = saved_path
+        prefs.program_path = ""
+    print("test_rig_addon: the checks took %.1f s" % (time.perf_counter() - start))
+
+
+try:
+    main()
+    print("test_rig_addon: OK")
+except Exception as e:  # noqa: BLE001 - any failure is the test's verdict
+    traceback.print_exc()
+    print("test_rig_addon: FAILED: %s" % e)
+    sys.exit(1)
