@@ -19,6 +19,7 @@ import bpy
 from bpy.props import BoolProperty, FloatProperty, IntProperty, StringProperty
 
 from . import skeletonize_run
+from .build_rig import build_rig
 from .skeletonize_run import RigError
 
 ADDON_ID = __package__  # "geodesic_skeleton_rig", or "bl_ext.REPO.geodesic_skeleton_rig" (4.2+)
@@ -127,8 +128,6 @@ class OBJECT_OT_rig_selected_meshes(bpy.types.Operator):
 def rig_selected_meshes(context, settings, progress_update=None):
     """Rigs the selected meshes; returns (the armature object, seconds). Raises RigError and
     leaves the scene as it was when anything fails."""
-    from .build_rig import build_rig
-
     start = time.perf_counter()
     step = (lambda fraction, _what="": progress_update(100 * fraction)) if progress_update else None
     objects = selected_meshes(context)

@@ -107,11 +107,11 @@ def gather_character(objects, depsgraph):
 
 
 def write_off(path, points, triangles):
-    """ASCII OFF, 9 significant digits (float32 exactly): one `%` formatting for all numbers,
-    which is many times faster than numpy.savetxt's loop over rows."""
+    """ASCII OFF, 7 significant digits (a ten-millionth of the coordinate, far below a voxel):
+    one `%` formatting for all numbers, many times faster than numpy.savetxt's loop over rows."""
     with open(path, "w") as out:
         out.write("OFF\n%d %d 0\n" % (len(points), len(triangles)))
-        out.write(("%.9g %.9g %.9g\n" * len(points)) % tuple(points.ravel().tolist()))
+        out.write(("%.7g %.7g %.7g\n" * len(points)) % tuple(points.ravel().tolist()))
         out.write(("3 %d %d %d\n" * len(triangles)) % tuple(triangles.ravel().tolist()))
 
 

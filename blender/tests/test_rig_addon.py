@@ -19,6 +19,9 @@ import bpy
 import numpy as np
 from mathutils import Matrix, Quaternion
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from off_import import import_off  # noqa: E402
+
 zip_path, cow_path, work = sys.argv[sys.argv.index("--") + 1:][:3]
 ADDON = "geodesic_skeleton_rig"
 
@@ -45,33 +48,18 @@ def install_addon():
     return module
 
 
-def read_off(path):
-    words = open(path).read().split()
-    check(words[0] == "OFF", path + " is not OFF")
-    n, m = int(words[1]), int(words[2])
-    points = np.array(words[4:4 + 3 * n], dtype=np.float64).reshape(-1, 3)
-    faces, i = [], 4 + 3 * n
-    for _ in range(m):
-        k = int(words[i])
-        faces.append([int(w) for w in words[i + 1:i + 1 + k]])
-        i += 1 + k
-    return points, faces
-
-
 def add_object(name, mesh, matrix=Matrix()):
     """An object of the mesh, with a UV layer and a material (which the rigging must keep)."""
-    mesh.uv_layers.new(name="UVMap")
-    mesh.materials.append(bpy.data.materials.new(name + "_material"))
     obj = bpy.data.objects.new(name, mesh)
     obj.matrix_world = matrix
     bpy.context.collection.objects.link(obj)
+    return with_uvs_and_material(obj)
+
+
+def with_uvs_and_material(obj):
+    obj.data.uv_layers.new(name="UVMap")
+    obj.data.materials.append(bpy.data.materials.new(obj.name + "_material"))
     return obj
-
-
-def mesh_object(name, points, faces):
-    mesh = bpy.data.meshes.new(name)
-    mesh.from_pydata([tuple(p) for p in points], [], faces)
-    return add_object(name, mesh)
 
 
 def box(bm, lo, hi):
@@ -281,8 +269,7 @@ def main():
     bpy.ops.object.delete()
 
     # The demo cow (y up in the file; Blender's z up), alone.
-    points, faces = read_off(cow_path)
-    cow = mesh_object("Cow", np.stack([points[:, 0], -points[:, 2], points[:, 1]], axis=1), faces)
+    cow = with_uvs_and_material(import_off(cow_path, "Cow"))
     cow_rig = rig_and_check(module, [cow], "cow")
     check_pairs(cow_rig, "cow", ["leg"])
     legs = sorted(n for n in cow_rig.data.bones.keys() if n.startswith("leg") and n.endswith("_01.L"))
