@@ -107,11 +107,17 @@ def gather_character(objects, depsgraph):
 
 
 def write_off(path, points, triangles):
-    """ASCII OFF, 7 significant digits (a ten-millionth of the coordinate, far below a voxel):
-    one `%` formatting for all numbers, many times faster than numpy.savetxt's loop over rows."""
+    """ASCII OFF, each coordinate as an integer mantissa and the file's one decimal exponent
+    (`-529283000e-7`): 9 significant digits of the largest coordinate, and formatting integers
+    costs half what formatting floats does. One `%` formatting for all numbers, many times
+    faster than numpy.savetxt's loop over rows."""
+    largest = float(np.abs(points).max()) if len(points) else 0.0
+    exponent = int(np.floor(np.log10(largest))) - 8 if largest > 0 else 0
+    mantissas = np.rint(points / 10.0 ** exponent).astype(np.int64)
+    coordinate = "%%de%d" % exponent
     with open(path, "w") as out:
         out.write("OFF\n%d %d 0\n" % (len(points), len(triangles)))
-        out.write(("%.7g %.7g %.7g\n" * len(points)) % tuple(points.ravel().tolist()))
+        out.write((" ".join([coordinate] * 3) + "\n") * len(points) % tuple(mantissas.ravel().tolist()))
         out.write(("3 %d %d %d\n" * len(triangles)) % tuple(triangles.ravel().tolist()))
 
 
