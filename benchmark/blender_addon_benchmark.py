@@ -10,7 +10,7 @@ and adds a character of about 100k faces (the cow with two levels of Catmull-Cla
 subdivision applied). For each: the wall time of Object > Rig Selected Meshes (bpy.ops, the
 rig removed after each run) and of `skeletonize MESH.off --weights -o OUT.json` run by the
 bundled program on the very mesh the add-on hands it (the selected meshes in world space),
-the median of 3 runs each, alternated. Prints a Markdown table and the machine's load."""
+the median of 5 runs each, alternated. Prints a Markdown table and the machine's load."""
 
 import os
 import statistics
@@ -27,7 +27,7 @@ from off_import import import_off  # noqa: E402
 arguments = sys.argv[sys.argv.index("--") + 1:]
 zip_path, mesh_folder = arguments[:2]
 names = arguments[2:] or ["cow", "elephant", "bull", "camel", "man", "armadillo"]  # plain OFF files
-RUNS = 3
+RUNS = 5
 
 bpy.ops.preferences.addon_install(filepath=zip_path, overwrite=True)
 bpy.ops.preferences.addon_enable(module="geodesic_skeleton_rig")

@@ -60,24 +60,30 @@ for mat in sides.values():
 order = list(sides)
 for polygon, side in zip(bones_mesh.polygons, side_of_poly):
     polygon.material_index = order.index(side)
-bpy.context.collection.objects.link(bpy.data.objects.new("Bones", bones_mesh))
+bones_object = bpy.data.objects.new("Bones", bones_mesh)
+bones_object.show_in_front = True  # drawn over the cow, as the viewport draws an armature "In Front"
+bpy.context.collection.objects.link(bones_object)
 cow.data.materials.append(material("cow", (0.8, 0.8, 0.8, 1)))
 
-# A label on the first bone of each chain: the names the add-on gave.
-camera_location = Vector((1.05, -1.35, 0.75))
+# A label at the middle of each chain: the names the add-on gave.
+camera_location = Vector((0.75, -1.25, 0.65))
+chains = {}
 for bone in rig.data.bones:
     side = bone.name[-2:] if bone.name[-2:] in sides else ""
     base = bone.name[:len(bone.name) - len(side)]
-    if base[-3:-2] == "_" and base[-2:].isdigit() and base[-2:] != "01":
-        continue  # one label per chain, on its first bone
-    curve = bpy.data.curves.new(bone.name, "FONT")
-    curve.body = base[:-3] + side if base[-3:] == "_01" else base + side
-    curve.size = 0.04
+    label = base[:-3] if base[-3:-2] == "_" and base[-2:].isdigit() else base
+    chains.setdefault((label, side), []).append(bone)
+for (label, side), bones in chains.items():
+    bone = bones[len(bones) // 2]  # the label at the middle of the chain
+    curve = bpy.data.curves.new(label + side, "FONT")
+    curve.body = label + side
+    curve.size = 0.045
     curve.align_x = "CENTER"
-    text = bpy.data.objects.new(bone.name, curve)
+    text = bpy.data.objects.new(label + side, curve)
     text.data.materials.append(sides[side])
+    text.show_in_front = True
     middle = rig.matrix_world @ ((bone.head_local + bone.tail_local) / 2)
-    text.location = middle + Vector((0.0, {".L": 0.1, ".R": -0.1, "": -0.02}[side], 0.05))
+    text.location = middle + Vector((0.0, {".L": 0.1, ".R": -0.1, "": -0.1}[side], 0.05))
     text.rotation_euler = (camera_location - text.location).to_track_quat("Z", "Y").to_euler()
     bpy.context.collection.objects.link(text)
 
@@ -91,8 +97,7 @@ scene.camera = camera
 scene.render.engine = "BLENDER_WORKBENCH"
 scene.display.shading.light = "STUDIO"
 scene.display.shading.color_type = "MATERIAL"
-scene.display.shading.show_xray = True
-scene.display.shading.xray_alpha = 0.55
+scene.display.shading.show_xray = False
 scene.display.shading.show_cavity = False
 scene.render.resolution_x, scene.render.resolution_y = 960, 600
 scene.render.film_transparent = False

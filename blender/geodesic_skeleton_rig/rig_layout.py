@@ -128,9 +128,9 @@ def pair_chains(chains, joints, plane, tolerance):
 
 def label_chains(chains, joints, radii, vertices, up, plane, children):
     """A label per chain from where it goes relative to the up axis and the mirror plane:
-    leg (down to the ground), arm (a side chain reaching sideways), spine (up or along the
-    body, with more chains after it), head (a central end chain going up, or forward and
-    thick), tail (a thin central end chain); chain_N otherwise."""
+    leg (down to the lowest quarter), arm (a side chain going sideways), spine (up or along
+    the body, with more chains after it), head (a central end chain going up, or a thick one
+    not going down), tail (a thin central end chain); chain_N otherwise."""
     heights = vertices @ up
     bottom, height = heights.min(), max(heights.max() - heights.min(), 1e-12)
     thickest = max(radii.max(), 1e-12)
@@ -154,7 +154,7 @@ def label_chains(chains, joints, radii, vertices, up, plane, children):
             label = "head"
         elif is_end and thickness < 0.35:
             label = "tail"
-        elif is_end:
+        elif is_end and rise >= -STEEP:
             label = "head"
         chain.label = label
     # Labels taken once per side: the others are numbered (leg, leg_2, ...), neutral ones too.
