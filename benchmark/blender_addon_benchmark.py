@@ -47,7 +47,6 @@ def subdivided(obj, levels):
     modifier = obj.modifiers.new("Subdivision", "SUBSURF")
     modifier.levels = levels
     bpy.ops.object.modifier_apply(modifier=modifier.name)
-    obj.name = obj.data.name = obj.name + "_subdivided_%d" % levels
     return obj
 
 
@@ -79,7 +78,7 @@ def time_program(off_path, json_path):
 
 
 objects = [import_off(os.path.join(mesh_folder, n + ".off"), n) for n in names]
-objects.append(subdivided(import_off(os.path.join(mesh_folder, "cow.off"), "cow"), 2))
+objects.append(subdivided(import_off(os.path.join(mesh_folder, "cow.off"), "cow_subdivided_2"), 2))
 rows = []
 with tempfile.TemporaryDirectory() as folder:
     for obj in objects:

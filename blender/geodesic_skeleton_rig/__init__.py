@@ -18,7 +18,7 @@ import time
 import bpy
 from bpy.props import BoolProperty, FloatProperty, IntProperty, StringProperty
 
-from . import skeletonize_run
+from . import rig_layout, skeletonize_run
 from .build_rig import build_rig
 from .skeletonize_run import RigError
 
@@ -73,6 +73,11 @@ class OBJECT_OT_rig_selected_meshes(bpy.types.Operator):
         default=0.05, min=0.0, max=1.0, step=1)
     fill_holes: BoolProperty(
         name="Fill Holes", description="Close the meshes' holes before voxelizing", default=True)
+    symmetrize: BoolProperty(
+        name="Symmetrize", description="Make each left/right pair of chains exact mirror images "
+                                       "(and put the middle chains on the mirror plane), then skin "
+                                       "the character to that rig (a second skeletonize run)",
+        default=False)
     max_bones: IntProperty(
         name="Bones per Vertex", description="Skinning: bones that may influence one vertex",
         default=4, min=1, max=8)
@@ -103,7 +108,7 @@ class OBJECT_OT_rig_selected_meshes(bpy.types.Operator):
         layout = self.layout
         layout.use_property_split = True
         column = layout.column(heading="Skeleton")
-        for name in ("resolution", "joint_spacing", "small_pieces", "fill_holes"):
+        for name in ("resolution", "joint_spacing", "small_pieces", "fill_holes", "symmetrize"):
             column.prop(self, name)
         column = layout.column(heading="Skin Weights")
         for name in ("max_bones", "sharpness", "min_weight", "influence_ratio"):
@@ -113,7 +118,8 @@ class OBJECT_OT_rig_selected_meshes(bpy.types.Operator):
         window_manager = context.window_manager
         window_manager.progress_begin(0, 100)
         try:
-            rig, seconds = rig_selected_meshes(context, self.settings(), window_manager.progress_update)
+            rig, seconds = rig_selected_meshes(context, self.settings(), window_manager.progress_update,
+                                               self.symmetrize)
         except RigError as e:
             self.report({"ERROR"}, str(e))
             return {"CANCELLED"}
@@ -125,9 +131,15 @@ class OBJECT_OT_rig_selected_meshes(bpy.types.Operator):
         return {"FINISHED"}
 
 
-def rig_selected_meshes(context, settings, progress_update=None):
+# The options that matter to the skinning, for the second run of Symmetrize.
+SKINNING_OPTIONS = ("--resolution", "--no-fill-holes", "--max-bones", "--sharpness", "--min-weight",
+                    "--influence-ratio")
+
+
+def rig_selected_meshes(context, settings, progress_update=None, symmetrize=False):
     """Rigs the selected meshes; returns (the armature object, seconds). Raises RigError and
-    leaves the scene as it was when anything fails."""
+    leaves the scene as it was when anything fails. `symmetrize`: the rig made symmetric
+    (rig_layout.symmetric_control()) and the weights computed again for it."""
     start = time.perf_counter()
     step = (lambda fraction, _what="": progress_update(100 * fraction)) if progress_update else None
     objects = selected_meshes(context)
@@ -139,6 +151,11 @@ def rig_selected_meshes(context, settings, progress_update=None):
     if step:
         step(0.1)
     report = skeletonize_run.run_skeletonize(program, character, settings, step)
+    if symmetrize:
+        control = rig_layout.symmetric_control(rig_layout.Layout(report["control"], character.points))
+        if control is not None:
+            skinning = {k: v for k, v in settings.items() if k in SKINNING_OPTIONS}
+            report = skeletonize_run.run_skeletonize(program, character, skinning, None, control)
     rig, _ = build_rig(context, character, report, name="Rig")
     if step:
         step(1.0)

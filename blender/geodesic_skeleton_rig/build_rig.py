@@ -11,6 +11,8 @@ from mathutils.kdtree import KDTree
 
 from .rig_layout import Layout
 
+# The custom property that marks the armatures the add-on made.
+RIG_MARK = "geodesic_skeleton_rig"
 # Bones nearly along the up axis take their roll from the forward axis instead.
 VERTICAL = 0.9
 
@@ -38,6 +40,7 @@ def armature_frame(layout):
 
 def add_armature(context, layout, name):
     data = bpy.data.armatures.new(name)
+    data[RIG_MARK] = 1  # made by the add-on: rigging its objects again replaces it
     data.display_type = "OCTAHEDRAL"
     rig = bpy.data.objects.new(name, data)
     rig.show_in_front = True
@@ -175,9 +178,30 @@ def add_vertex_groups(obj, count, vertex, bone, weight, names):
             mesh.attributes.active = mesh.attributes[previous_attribute]
 
 
+def is_rig(obj):
+    return obj is not None and obj.type == "ARMATURE" and RIG_MARK in obj.data
+
+
+def unbind_from_earlier_rigs(obj):
+    """An object rigged before by the add-on loses that binding (its Armature modifier, the
+    vertex groups of that rig's bones, its parenting to it); the earlier rig stays."""
+    for modifier in list(obj.modifiers):
+        if modifier.type == "ARMATURE" and is_rig(modifier.object):
+            for bone in modifier.object.data.bones:
+                group = obj.vertex_groups.get(bone.name)
+                if group is not None:
+                    obj.vertex_groups.remove(group)
+            obj.modifiers.remove(modifier)
+    if is_rig(obj.parent):
+        world = obj.matrix_world.copy()
+        obj.parent = None
+        obj.matrix_world = world
+
+
 def bind_object(obj, rig, names, first, count, same_count, character_points, vertex, bone, weight):
     """Vertex groups (one per bone that weighs on the object, a group of the bone's name replaced) and the
     Armature modifier; the object is parented to the rig when it had no parent."""
+    unbind_from_earlier_rigs(obj)
     inside = (vertex >= first) & (vertex < first + count)
     v, b, w = vertex[inside] - first, bone[inside], weight[inside]
     if not same_count:

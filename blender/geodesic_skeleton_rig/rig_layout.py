@@ -248,3 +248,54 @@ class Layout:
                      children_of(self.parents))
         self.names = bone_names(self.chains, len(self.bones))
         self.parent_of_bone = bone_parents(self.chains, self.positions, self.parents, self.bones, self.radii)
+
+
+def symmetric_control(layout):
+    """The control skeleton made mirror-symmetric across the layout's plane, for `skeletonize
+    --skeleton`: each left/right pair of chains becomes the mirror images of one chain (the
+    average of the two sides when they have as many joints, else the side with more), the
+    joints near the plane are moved onto it; None when the layout has no pair. Chains keep
+    their order, so a chain's start joint exists when it is reached."""
+    if layout.plane is None or not any(c.side for c in layout.chains):
+        return None
+    normal, offset = layout.plane
+    positions, radii = layout.positions, layout.radii
+    images = mirror(positions, normal, offset)
+
+    def on_plane(points):
+        distance = points @ normal - offset
+        near = np.abs(distance) <= layout.tolerance
+        return np.where(near[:, None], points - np.outer(distance, normal), points)
+
+    new_positions, new_radii, new_parents = [], [], []
+    new_of = {}  # original joint -> new joint, for the joints that chains start from
+    for root in [j for j, p in enumerate(layout.parents) if p < 0]:
+        new_of[root] = len(new_positions)
+        new_positions.append(on_plane(positions[[root]])[0])
+        new_radii.append(radii[root])
+        new_parents.append(-1)
+    for chain in layout.chains:
+        tail = chain.joints[1:]
+        if chain.partner is None:
+            points, chain_radii = on_plane(positions[tail]), radii[tail]
+        else:
+            other = layout.chains[chain.partner]
+            other_tail = other.joints[1:]
+            if len(other_tail) == len(tail):
+                points = 0.5 * (positions[tail] + images[other_tail])
+                chain_radii = 0.5 * (radii[tail] + radii[other_tail])
+            elif len(tail) > len(other_tail):
+                points, chain_radii = positions[tail], radii[tail]
+            else:
+                points, chain_radii = images[other_tail], radii[other_tail]
+        parent = new_of[chain.joints[0]]
+        for point, radius in zip(points, chain_radii):
+            new_positions.append(point)
+            new_radii.append(radius)
+            new_parents.append(parent)
+            parent = len(new_positions) - 1
+        new_of[chain.joints[-1]] = parent
+    joints = [{"position": [float(c) for c in p], "radius": float(r), "parent": int(q)}
+              for p, r, q in zip(new_positions, new_radii, new_parents)]
+    bones = [[q, j] for j, q in enumerate(new_parents) if q >= 0]
+    return {"joints": joints, "bones": bones}

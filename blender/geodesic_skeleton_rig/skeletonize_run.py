@@ -150,9 +150,11 @@ def error_message(stderr, mesh_path, returncode):
     return "skeletonize failed (exit code %d)%s" % (returncode, tail)
 
 
-def run_skeletonize(program, character, settings, progress=None):
-    """Runs `skeletonize MESH --weights -o REPORT.json` with the settings; returns the report
-    (a dict). Raises RigError with skeletonize's message when it fails."""
+def run_skeletonize(program, character, settings, progress=None, skeleton=None):
+    """Runs `skeletonize MESH --weights -o REPORT.json` with the settings, or with a given
+    control skeleton (a dict as the report's "control") `--skeleton RIG.json`, which skins the
+    mesh to it; returns the report (a dict). Raises RigError with skeletonize's message when
+    it fails."""
     with tempfile.TemporaryDirectory(prefix="geodesic_skeleton_rig_") as folder:
         mesh_path = os.path.join(folder, "character.off")
         report_path = os.path.join(folder, "rig.json")
@@ -160,6 +162,11 @@ def run_skeletonize(program, character, settings, progress=None):
         if progress:
             progress(0.2, "skeletonize")
         command = [program, mesh_path, "--weights", "-o", report_path] + skeletonize_arguments(settings)
+        if skeleton is not None:
+            skeleton_path = os.path.join(folder, "given_rig.json")
+            with open(skeleton_path, "w") as f:
+                json.dump(skeleton, f)
+            command += ["--skeleton", skeleton_path]
         try:
             run = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                                  universal_newlines=True)

@@ -168,23 +168,25 @@ def expected_bone_count(module, objects, options):
     return len(json.load(open(os.path.join(work, "same_mesh.json")))["control"]["bones"])
 
 
-def rig_and_check(module, objects, label):
-    """Runs the operator on the objects and checks everything but the deformation; returns the rig."""
+def rig_and_check(module, objects, label, symmetrize=False):
+    """Runs the operator on the objects and checks everything but the deformation; returns the rig.
+    With `symmetrize`, the longer side of each pair is mirrored: at least skeletonize's bones."""
     select_only(objects)
     kept = {o.name: (len(o.data.vertices), len(o.data.polygons), [u.name for u in o.data.uv_layers],
                      [m.name for m in o.data.materials], o.matrix_world.copy(), world_vertices(o, False))
             for o in objects}
-    kept_modifiers = {o.name: [m.type for m in o.modifiers] for o in objects}
+    kept_modifiers = {o.name: [m.type for m in o.modifiers if m.type != "ARMATURE"] for o in objects}
     armatures = set(bpy.data.armatures)
     start = time.perf_counter()
-    result, message = run_operator()
+    result, message = run_operator(symmetrize=symmetrize)
     seconds = time.perf_counter() - start
     check(result == {"FINISHED"}, label + ": the operator failed: " + message)
     new = [a for a in bpy.data.armatures if a not in armatures]
     check(len(new) == 1, label + ": %d armatures made, not 1" % len(new))
     rig = [o for o in bpy.data.objects if o.data == new[0]][0]
     bones = expected_bone_count(module, objects, {})
-    check(len(rig.data.bones) == bones, label + ": %d bones, skeletonize has %d" % (len(rig.data.bones), bones))
+    check(len(rig.data.bones) >= bones if symmetrize else len(rig.data.bones) == bones,
+          label + ": %d bones, skeletonize has %d" % (len(rig.data.bones), bones))
     roots = [b for b in rig.data.bones if b.parent is None]
     check(len(roots) == 1, label + ": %d root bones, not one hierarchy" % len(roots))
     for obj in objects:
@@ -215,6 +217,20 @@ def rig_and_check(module, objects, label):
     print("test_rig_addon: %s: %d bones (skeletonize: %d) in %.2f s: %s" % (
         label, len(rig.data.bones), bones, seconds, " ".join(b.name for b in rig.data.bones)))
     return rig
+
+
+def check_exact_mirror(rig, label):
+    """Every .L bone has its .R bone at its mirror image (a symmetrized rig)."""
+    names = set(rig.data.bones.keys())
+    left = {n[:-2] for n in names if n.endswith(".L")}
+    check(left and left == {n[:-2] for n in names if n.endswith(".R")}, label + ": the .L and .R names differ")
+    flip = np.array([-1, 1, 1])
+    for base in left:
+        a, b = rig.data.bones[base + ".L"], rig.data.bones[base + ".R"]
+        gap = max(np.linalg.norm(np.array(a.head_local) * flip - np.array(b.head_local)),
+                  np.linalg.norm(np.array(a.tail_local) * flip - np.array(b.tail_local)))
+        check(gap < 1e-5 * rig.dimensions.length, label + ": %s.L and %s.R are %g from mirror images" % (base, base, gap))
+    print("test_rig_addon: %s: %d .L bones, each with its exact mirror" % (label, len(left)))
 
 
 def check_pairs(rig, label, limbs):
@@ -293,6 +309,14 @@ def main():
     rig = rig_and_check(module, character, "character")
     check_pairs(rig, "character", ["leg", "arm"])
     turn_bone_and_check(rig, character, "leg_01.L", "head", "character", still_objects=character[1:])
+
+    # Rigged again with Symmetrize: the new rig replaces the first one's binding.
+    symmetric = rig_and_check(module, character, "symmetrized character", symmetrize=True)
+    check_pairs(symmetric, "symmetrized character", ["leg", "arm"])
+    check_exact_mirror(symmetric, "symmetrized character")
+    check(all(o.parent == symmetric for o in character), "symmetrized character: not parented to the new rig")
+    turn_bone_and_check(symmetric, character, "leg_01.L", "head", "symmetrized character",
+                        still_objects=character[1:])
 
     # The errors: each with its report, the scene unchanged.
     select_only([])
