@@ -19,7 +19,7 @@ import bpy
 from bpy.props import BoolProperty, FloatProperty, IntProperty, StringProperty
 
 from . import rig_layout, skeletonize_run
-from .build_rig import build_rig
+from .build_rig import build_rig, is_rig
 from .skeletonize_run import RigError
 
 ADDON_ID = __package__  # "geodesic_skeleton_rig", or "bl_ext.REPO.geodesic_skeleton_rig" (4.2+)
@@ -147,7 +147,17 @@ def rig_selected_meshes(context, settings, progress_update=None, symmetrize=Fals
         raise RigError("Select one or more mesh objects to rig (they are rigged together as one character)")
     prefs = preferences(context)
     program = skeletonize_run.find_program(prefs.program_path if prefs else "")
-    character = skeletonize_run.gather_character(objects, context.evaluated_depsgraph_get())
+    # The shape at rest: the add-on's earlier rigs of these objects (which this one replaces)
+    # do not deform what is exported.
+    earlier = [m for o in objects for m in o.modifiers
+               if m.type == "ARMATURE" and m.show_viewport and is_rig(m.object)]
+    for modifier in earlier:
+        modifier.show_viewport = False
+    try:
+        character = skeletonize_run.gather_character(objects, context.evaluated_depsgraph_get())
+    finally:
+        for modifier in earlier:
+            modifier.show_viewport = True
     if step:
         step(0.1)
     report = skeletonize_run.run_skeletonize(program, character, settings, step)

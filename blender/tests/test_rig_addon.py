@@ -310,7 +310,10 @@ def main():
     check_pairs(rig, "character", ["leg", "arm"])
     turn_bone_and_check(rig, character, "leg_01.L", "head", "character", still_objects=character[1:])
 
-    # Rigged again with Symmetrize: the new rig replaces the first one's binding.
+    # Rigged again with Symmetrize: the new rig replaces the first one's binding, and the first
+    # rig's pose does not change the shape that is rigged.
+    rig.pose.bones["leg_01.R"].rotation_mode = "XYZ"
+    rig.pose.bones["leg_01.R"].rotation_euler = (1.0, 0.0, 0.0)
     symmetric = rig_and_check(module, character, "symmetrized character", symmetrize=True)
     check_pairs(symmetric, "symmetrized character", ["leg", "arm"])
     check_exact_mirror(symmetric, "symmetrized character")
