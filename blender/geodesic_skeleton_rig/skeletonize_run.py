@@ -155,18 +155,25 @@ def run_skeletonize(program, character, settings, progress=None, skeleton=None):
     control skeleton (a dict as the report's "control") `--skeleton RIG.json`, which skins the
     mesh to it; returns the report (a dict). Raises RigError with skeletonize's message when
     it fails."""
-    with tempfile.TemporaryDirectory(prefix="geodesic_skeleton_rig_") as folder:
+    try:
+        folder_context = tempfile.TemporaryDirectory(prefix="geodesic_skeleton_rig_")
+    except OSError as e:
+        raise RigError("Cannot make a temporary folder for skeletonize's files: " + str(e))
+    with folder_context as folder:
         mesh_path = os.path.join(folder, "character.off")
         report_path = os.path.join(folder, "rig.json")
-        write_off(mesh_path, character.points, character.triangles)
+        command = [program, mesh_path, "--weights", "-o", report_path] + skeletonize_arguments(settings)
+        try:
+            write_off(mesh_path, character.points, character.triangles)
+            if skeleton is not None:
+                skeleton_path = os.path.join(folder, "given_rig.json")
+                with open(skeleton_path, "w") as f:
+                    json.dump(skeleton, f)
+                command += ["--skeleton", skeleton_path]
+        except OSError as e:
+            raise RigError("Cannot write the meshes for skeletonize in " + folder + ": " + str(e))
         if progress:
             progress(0.2, "skeletonize")
-        command = [program, mesh_path, "--weights", "-o", report_path] + skeletonize_arguments(settings)
-        if skeleton is not None:
-            skeleton_path = os.path.join(folder, "given_rig.json")
-            with open(skeleton_path, "w") as f:
-                json.dump(skeleton, f)
-            command += ["--skeleton", skeleton_path]
         try:
             run = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                                  universal_newlines=True)

@@ -290,9 +290,34 @@ def turn_bone_and_check(rig, objects, bone_name, still_prefix, label, still_obje
         label, bone_name, len(moved_leg), np.median(moved_leg), len(moved_still)))
 
 
+def check_options_match_the_program(module):
+    """The redo panel's defaults and ranges are skeletonize's (its --help), and the UI is there."""
+    import re
+    help_text = subprocess.run([module.skeletonize_run.find_program(), "--help"], stdout=subprocess.PIPE,
+                               universal_newlines=True).stdout
+    properties = bpy.ops.object.rig_selected_meshes.get_rna_type().properties
+    for name, option in (("resolution", "--resolution"), ("joint_spacing", "--joint-spacing"),
+                         ("small_pieces", "--small-pieces"), ("max_bones", "--max-bones"),
+                         ("sharpness", "--sharpness"), ("min_weight", "--min-weight"),
+                         ("influence_ratio", "--influence-ratio")):
+        found = re.search(r"\n  %s [A-Z]+\s.*?in \[([^,]+), ([^\]]+)\] \(default ([0-9.]+)" % option,
+                          help_text, re.S)
+        check(found, "skeletonize --help does not give the range of " + option)
+        low, high, default = (float(x) for x in found.groups())
+        p = properties[name]
+        check(abs(p.default - default) < 1e-6 and abs(p.hard_min - low) < 1e-6 and abs(p.hard_max - high) < 1e-6,
+              "the option %s is %g in [%g, %g], skeletonize's %s %g in [%g, %g]"
+              % (name, p.default, p.hard_min, p.hard_max, option, default, low, high))
+    check(hasattr(bpy.types, "VIEW3D_PT_geodesic_skeleton_rig"), "no sidebar panel")
+    check(any(getattr(f, "__module__", "").startswith(ADDON) for f in bpy.types.VIEW3D_MT_object._dyn_ui_initialize()),
+          "no entry in the Object menu")
+    print("test_rig_addon: the options' defaults and ranges are skeletonize's")
+
+
 def main():
     start = time.perf_counter()
     module = install_addon()
+    check_options_match_the_program(module)
     bpy.ops.object.select_all(action="SELECT")
     bpy.ops.object.delete()
 
