@@ -86,12 +86,14 @@ def find_mirror_plane(joints, vertices, tolerance):
 
 def resample(polyline, count=16):
     """`count` points at equal steps of arc length along the polyline."""
-    steps = np.linalg.norm(np.diff(polyline, axis=0), axis=1)
-    along = np.concatenate([[0.0], np.cumsum(steps)])
+    along = np.concatenate([[0.0], np.cumsum(np.sqrt(np.sum(np.diff(polyline, axis=0) ** 2, axis=1)))])
     if along[-1] <= 0:
         return np.repeat(polyline[:1], count, axis=0)
     targets = np.linspace(0.0, along[-1], count)
-    return np.stack([np.interp(targets, along, polyline[:, k]) for k in range(3)], axis=1)
+    segment = np.clip(np.searchsorted(along, targets, side="right") - 1, 0, len(polyline) - 2)
+    length = along[segment + 1] - along[segment]
+    t = np.where(length > 0, (targets - along[segment]) / np.where(length > 0, length, 1.0), 0.0)
+    return polyline[segment] + t[:, None] * (polyline[segment + 1] - polyline[segment])
 
 
 def pair_chains(chains, joints, plane, tolerance):
