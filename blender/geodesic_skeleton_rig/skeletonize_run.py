@@ -106,19 +106,38 @@ def gather_character(objects, depsgraph):
     return character
 
 
+def triangle_lines(triangles, vertex_count):
+    """The OFF face lines `3 a b c`, the indices right-aligned in a fixed width: the text of
+    every vertex index is made once (numpy digits), and each line is copied from it, twice
+    as fast as formatting the indices one by one."""
+    width = max(1, len(str(max(vertex_count - 1, 0))))
+    powers = 10 ** np.arange(width - 1, -1, -1, dtype=np.int64)
+    indices = np.arange(vertex_count, dtype=np.int64)[:, None]
+    digits = (indices // powers % 10 + ord("0")).astype(np.uint8)
+    digits[(indices < powers) & (powers > 1)] = ord(" ")  # leading zeros as spaces
+    lines = np.empty((len(triangles), 2 + 3 * (width + 1)), dtype=np.uint8)
+    lines[:, 0] = ord("3")
+    for k in range(3):
+        start = 1 + k * (width + 1)
+        lines[:, start] = ord(" ")
+        lines[:, start + 1:start + 1 + width] = digits[triangles[:, k]]
+    lines[:, -1] = ord("\n")
+    return lines.tobytes()
+
+
 def write_off(path, points, triangles):
     """ASCII OFF, each coordinate as an integer mantissa and the file's one decimal exponent
     (`-529283000e-7`): 9 significant digits of the largest coordinate, and formatting integers
-    costs half what formatting floats does. One `%` formatting for all numbers, many times
-    faster than numpy.savetxt's loop over rows."""
+    costs half what formatting floats does (one `%` formatting for all of them, many times
+    faster than numpy.savetxt's loop over rows); the faces by triangle_lines()."""
     largest = float(np.abs(points).max()) if len(points) else 0.0
     exponent = int(np.floor(np.log10(largest))) - 8 if largest > 0 else 0
     mantissas = np.rint(points / 10.0 ** exponent).astype(np.int64)
     coordinate = "%%de%d" % exponent
-    with open(path, "w") as out:
-        out.write("OFF\n%d %d 0\n" % (len(points), len(triangles)))
-        out.write((" ".join([coordinate] * 3) + "\n") * len(points) % tuple(mantissas.ravel().tolist()))
-        out.write(("3 %d %d %d\n" * len(triangles)) % tuple(triangles.ravel().tolist()))
+    with open(path, "wb") as out:
+        out.write(b"OFF\n%d %d 0\n" % (len(points), len(triangles)))
+        out.write(((" ".join([coordinate] * 3) + "\n") * len(points) % tuple(mantissas.ravel().tolist())).encode())
+        out.write(triangle_lines(triangles, len(points)))
 
 
 def skeletonize_arguments(settings):
@@ -143,6 +162,8 @@ def error_message(stderr, mesh_path, returncode):
         if "error:" in line:
             message = line.split("error:", 1)[1].strip()
             message = message.replace(mesh_path + ": ", "").replace(mesh_path, "the selected meshes")
+            if "has no bone" in message:
+                message += " (a shape without limbs or length, such as a ball, has one joint and no bone)"
             return "skeletonize could not rig the selected meshes: " + message
     if returncode < 0:
         return "skeletonize stopped with signal %d (a crash): please report it with the mesh" % -returncode
@@ -196,8 +217,11 @@ def run_skeletonize(program, character, settings, progress=None, skeleton=None):
 def check_report(report, vertex_count):
     control = report["control"]
     joints, bones, weights = control["joints"], control["bones"], report["weights"]
-    if not joints or not bones:
-        raise ValueError("the rig has no bones")
+    if joints and not bones:
+        raise RigError("skeletonize found no bones in the selected meshes (a shape without limbs or "
+                       "length, such as a ball, has one joint): raise the resolution, or rig a longer shape")
+    if not joints:
+        raise ValueError("the rig has no joints")
     if weights["vertices"] != vertex_count:
         raise ValueError("weights for %d vertices, %d exported" % (weights["vertices"], vertex_count))
     if not len(weights["vertex"]) == len(weights["bone"]) == len(weights["weight"]):

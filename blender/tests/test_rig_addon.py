@@ -352,6 +352,9 @@ def main():
     plane = bmesh_object("Sheet", lambda bm: bmesh.ops.create_grid(bm, x_segments=4, y_segments=4, size=1))
     select_only([plane])
     expect_error("encloses no volume", "a mesh with no volume")
+    ball = bmesh_object("Ball", lambda bm: bmesh.ops.create_icosphere(bm, subdivisions=2, radius=1))
+    select_only([ball])
+    expect_error("has no bone (a shape without limbs", "a ball (one joint, no bone)")
     select_only([cow])
     prefs = bpy.context.preferences.addons[ADDON].preferences
     bundled = module.skeletonize_run.bundled_program()
