@@ -82,9 +82,8 @@ def add_armature(context, layout, name):
     return rig, names
 
 
-def weights_by_vertex(report, vertex_count):
-    """The report's weights as arrays (vertex, bone, weight), every vertex with at least one:
-    a vertex skeletonize gave none (isolated, not on a face) takes its nearest neighbour's."""
+def weights_by_vertex(report):
+    """The report's weights as arrays (vertex, bone, weight)."""
     w = report["weights"]
     vertex = np.asarray(w["vertex"], dtype=np.int64)
     bone = np.asarray(w["bone"], dtype=np.int64)
@@ -93,6 +92,8 @@ def weights_by_vertex(report, vertex_count):
 
 
 def fill_unweighted(vertex, bone, weight, points):
+    """Every vertex with at least one weight: a vertex skeletonize gave none (isolated, on no
+    face) takes the weights of its nearest weighted vertex."""
     has = np.zeros(len(points), dtype=bool)
     has[vertex] = True
     missing = np.flatnonzero(~has)
@@ -235,7 +236,7 @@ def bind_object(obj, rig, names, first, count, same_count, character_points, ver
 def build_rig(context, character, report, name="Rig"):
     """The armature and the bindings; returns the armature object."""
     layout = Layout(report["control"], character.points)
-    vertex, bone, weight = weights_by_vertex(report, len(character.points))
+    vertex, bone, weight = weights_by_vertex(report)
     vertex, bone, weight = fill_unweighted(vertex, bone, weight, character.points)
     objects = [o for o, *_ in character.objects]
     rig, names = add_armature(context, layout, name)

@@ -79,7 +79,8 @@ def bmesh_object(name, fill, matrix=Matrix()):
 
 
 def make_character():
-    """A mirror-symmetric biped (x = 0): a body of overlapping boxes (torso, legs, arms), a
+    """A mirror-symmetric biped (x = 0): a body of overlapping boxes (torso, legs, arms) and a
+    loose vertex, a
     head (a unit cube scaled, turned 45 degrees about z and moved: its transform, not its
     data) and a hat (a cone with n-gon caps): three objects, one character."""
     def body_fill(bm):
@@ -89,6 +90,7 @@ def make_character():
         box(bm, (0.25, -0.08, 1.6), (1.0, 0.08, 1.76))
         box(bm, (-1.0, -0.08, 1.6), (-0.25, 0.08, 1.76))
         bmesh.ops.subdivide_edges(bm, edges=bm.edges[:], cuts=4, use_grid_fill=True)
+        bm.verts.new((0.0, 0.0, 1.4))  # a loose vertex (on no face), inside the torso
     head_matrix = (Matrix.Translation((0, 0, 1.97)) @ Matrix.Rotation(math.radians(45), 4, "Z")
                    @ Matrix.Diagonal((0.13, 0.13, 0.18, 1)))
     objects = [bmesh_object("Body", body_fill),
