@@ -60,28 +60,62 @@ def mirror_matches(points, normal, offset, tolerance):
     return np.where(distances[np.arange(len(points)), nearest] <= tolerance, nearest, -1)
 
 
+# The mesh is mirror-symmetric across a plane when this share of its surface cells (of a
+# grid of MIRROR_GRID cells along its longest extent) have their mirror image within a cell.
+MIRROR_GRID = 32
+MIRROR_SHARE = 0.8
+
+
+class SurfaceCells:
+    """The cells of a grid (MIRROR_GRID cells along the longest extent) that hold vertices,
+    and those cells with their 26 neighbours, as sorted integer keys."""
+
+    def __init__(self, vertices, grid=MIRROR_GRID):
+        self.origin = vertices.min(axis=0)
+        self.cell = max(float((vertices.max(axis=0) - self.origin).max()), 1e-12) / grid
+        self.span = grid + 5  # keys for cells -2 .. grid + 2 along each axis
+        cells = np.unique(self.key(np.floor((vertices - self.origin) / self.cell).astype(np.int64)))
+        steps = np.array([(i * self.span + j) * self.span + k for i in (-1, 0, 1) for j in (-1, 0, 1)
+                          for k in (-1, 0, 1)])
+        self.near = np.unique((cells[:, None] + steps[None, :]).ravel())
+        s = self.span
+        self.centres = self.origin + (np.stack([cells // (s * s), cells // s % s, cells % s], axis=1) - 2 + 0.5) \
+            * self.cell
+
+    def key(self, cells):
+        c = np.clip(cells + 2, 0, self.span - 1)
+        return (c[:, 0] * self.span + c[:, 1]) * self.span + c[:, 2]
+
+    def mirror_share(self, normal, offset):
+        """The share of the occupied cells whose mirror image is in or beside an occupied cell."""
+        images = np.floor((mirror(self.centres, normal, offset) - self.origin) / self.cell).astype(np.int64)
+        keys = self.key(images)
+        where = np.minimum(np.searchsorted(self.near, keys), len(self.near) - 1)
+        return float(np.mean(self.near[where] == keys)) if len(keys) else 0.0
+
+
 def find_mirror_plane(joints, vertices, tolerance):
-    """The plane (unit normal, offset) across which the most joints off it have a mirror
-    image among the joints: first x = const (Blender's X-mirror), then the vertices'
-    principal planes. None when no joint off the plane has one."""
+    """The character's mirror plane (unit normal, offset): among the planes x, y, z = const
+    and the vertices' principal planes, through the middle of their box or the joints'
+    median, the one across which the mesh is most symmetric (its surface cells' mirror
+    images on its surface), if at least MIRROR_SHARE of them are; x = const (Blender's
+    X-mirror) wins when it is as good within 0.02. None for a mesh that is not symmetric."""
+    sample = vertices[:: max(1, len(vertices) // 8000)]
     centre = 0.5 * (vertices.min(axis=0) + vertices.max(axis=0))
-    centred = vertices - vertices.mean(axis=0)
-    _, _, axes = np.linalg.svd(centred[:: max(1, len(centred) // 20000)], full_matrices=False)
+    _, _, axes = np.linalg.svd(sample - sample.mean(axis=0), full_matrices=False)
     candidates = [np.array([1.0, 0, 0]), np.array([0, 1.0, 0]), np.array([0, 0, 1.0])] + list(axes)
-    best, best_count = None, 0
+    cells = SurfaceCells(sample)
+    scored = []
     for normal in candidates:
         normal = normal / np.linalg.norm(normal)
         if normal[np.argmax(np.abs(normal))] < 0:
             normal = -normal  # the positive side is the left (+X, as Blender names it)
         for offset in (centre @ normal, np.median(joints @ normal)):
-            off_plane = np.abs(joints @ normal - offset) > tolerance
-            matches = mirror_matches(joints, normal, offset, tolerance)
-            count = int(np.sum(off_plane & (matches >= 0)))
-            # Off-plane joints without an image count against the plane.
-            count -= int(np.sum(off_plane & (matches < 0)))
-            if count > best_count:
-                best, best_count = (normal, offset), count
-    return best
+            scored.append((cells.mirror_share(normal, offset), normal, offset))
+    best = max(scored, key=lambda s: s[0])
+    x_planes = [s for s in scored[:2] if s[0] >= best[0] - 0.02]
+    share, normal, offset = max(x_planes, key=lambda s: s[0]) if x_planes else best
+    return (normal, offset) if share >= MIRROR_SHARE else None
 
 
 def resample(polyline, count=16):
