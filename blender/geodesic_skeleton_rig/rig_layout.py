@@ -1,13 +1,13 @@
 # SPDX-License-Identifier: LGPL-3.0-or-later
 """The rig's layout from skeletonize's control skeleton, without Blender (numpy only): the
-chains between junctions, the mirror plane of the joints, left/right pairs of chains, and
+chains between junctions, the mesh's mirror plane, left/right pairs of chains, and
 names a rigger can read (spine, leg, arm, head, tail where the geometry says so, chain_N
 elsewhere), and the parent of every bone."""
 
 import numpy as np
 
-# A joint matches its mirror image when they are closer than this fraction of the
-# character's longest extent (the joints sit on voxels: a few voxels of 64 apart).
+# A chain matches its mirror image when they are closer than this fraction of the
+# character's longest extent all along (the joints sit on voxels: a few voxels of 64 apart).
 MIRROR_TOLERANCE = 0.05
 # A direction is "up" or "down" when its cosine with the up axis is beyond this.
 STEEP = 0.5
@@ -51,15 +51,6 @@ def mirror(points, normal, offset):
     return points - 2.0 * np.outer(points @ normal - offset, normal)
 
 
-def mirror_matches(points, normal, offset, tolerance):
-    """For each joint, the joint nearest its mirror image if it is within the tolerance (itself
-    for a joint on the plane), else -1."""
-    images = mirror(points, normal, offset)
-    distances = np.linalg.norm(images[:, None, :] - points[None, :, :], axis=2)
-    nearest = distances.argmin(axis=1)
-    return np.where(distances[np.arange(len(points)), nearest] <= tolerance, nearest, -1)
-
-
 # The mesh is mirror-symmetric across a plane when this share of its surface cells (of a
 # grid of MIRROR_GRID cells along its longest extent) have their mirror image within a cell.
 MIRROR_GRID = 32
@@ -94,7 +85,7 @@ class SurfaceCells:
         return float(np.mean(self.near[where] == keys)) if len(keys) else 0.0
 
 
-def find_mirror_plane(joints, vertices, tolerance):
+def find_mirror_plane(joints, vertices):
     """The character's mirror plane (unit normal, offset): among the planes x, y, z = const
     and the vertices' principal planes, through the middle of their box or the joints'
     median, the one across which the mesh is most symmetric (its surface cells' mirror
@@ -277,7 +268,7 @@ class Layout:
         self.up = np.asarray(up, dtype=np.float64)
         extent = vertices.max(axis=0) - vertices.min(axis=0)
         self.tolerance = MIRROR_TOLERANCE * max(float(extent.max()), 1e-12)
-        self.plane = find_mirror_plane(self.positions, vertices, self.tolerance)
+        self.plane = find_mirror_plane(self.positions, vertices)
         self.chains = split_into_chains(self.parents, self.bones)
         pair_chains(self.chains, self.positions, self.plane, self.tolerance)
         label_chains(self.chains, self.positions, self.radii, vertices, self.up, self.plane,
