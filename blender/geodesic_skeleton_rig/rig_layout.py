@@ -96,29 +96,41 @@ def find_mirror_plane(joints, vertices):
     _, _, axes = np.linalg.svd(sample - sample.mean(axis=0), full_matrices=False)
     candidates = [np.array([1.0, 0, 0]), np.array([0, 1.0, 0]), np.array([0, 0, 1.0])] + list(axes)
     cells = SurfaceCells(sample)
-    scored = []
+    normals = []
     for normal in candidates:
         normal = normal / np.linalg.norm(normal)
         if normal[np.argmax(np.abs(normal))] < 0:
             normal = -normal  # the positive side is the left (+X, as Blender names it)
-        for offset in (centre @ normal, np.median(joints @ normal)):
-            scored.append((cells.mirror_share(normal, offset), normal, offset))
+        if all(abs(normal @ other) < 0.9999 for other in normals):  # a principal axis along x, y or z
+            normals.append(normal)
+    scored = [(cells.mirror_share(n, centre @ n), n, centre @ n) for n in normals]
+    # Through the joints' median too, for the two best normals (a raised arm moves the box).
+    for _, normal, _ in sorted(scored, key=lambda s: -s[0])[:2]:
+        offset = float(np.median(joints @ normal))
+        scored.append((cells.mirror_share(normal, offset), normal, offset))
     best = max(scored, key=lambda s: s[0])
-    x_planes = [s for s in scored[:2] if s[0] >= best[0] - 0.02]
+    x_planes = [s for s in scored if abs(s[1][0]) > 0.9999 and s[0] >= best[0] - 0.02]
     share, normal, offset = max(x_planes, key=lambda s: s[0]) if x_planes else best
     return (normal, offset) if share >= MIRROR_SHARE else None
 
 
 def resample(polyline, count=16):
-    """`count` points at equal steps of arc length along the polyline."""
-    along = np.concatenate([[0.0], np.cumsum(np.sqrt(np.sum(np.diff(polyline, axis=0) ** 2, axis=1)))])
-    if along[-1] <= 0:
-        return np.repeat(polyline[:1], count, axis=0)
-    targets = np.linspace(0.0, along[-1], count)
-    segment = np.clip(np.searchsorted(along, targets, side="right") - 1, 0, len(polyline) - 2)
-    length = along[segment + 1] - along[segment]
-    t = np.where(length > 0, (targets - along[segment]) / np.where(length > 0, length, 1.0), 0.0)
-    return polyline[segment] + t[:, None] * (polyline[segment + 1] - polyline[segment])
+    """`count` points at equal steps of arc length along the polyline (a few joints: plain
+    Python, which is faster than numpy's calls on such small arrays)."""
+    points = [tuple(p) for p in polyline.tolist()]
+    along = [0.0]
+    for p, q in zip(points, points[1:]):
+        along.append(along[-1] + ((q[0] - p[0]) ** 2 + (q[1] - p[1]) ** 2 + (q[2] - p[2]) ** 2) ** 0.5)
+    total, out, segment = along[-1], [], 0
+    for step in range(count):
+        target = total * step / (count - 1)
+        while segment < len(points) - 2 and along[segment + 1] < target:
+            segment += 1
+        length = along[segment + 1] - along[segment] if len(points) > 1 else 0.0
+        t = (target - along[segment]) / length if length > 0 else 0.0
+        p, q = points[segment], points[min(segment + 1, len(points) - 1)]
+        out.append((p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]), p[2] + t * (q[2] - p[2])))
+    return np.array(out)
 
 
 def pair_chains(chains, joints, plane, tolerance):
@@ -130,8 +142,13 @@ def pair_chains(chains, joints, plane, tolerance):
         return
     normal, offset = plane
     images = mirror(joints, normal, offset)
-    mirrored = [resample(images[c.joints]) for c in chains]
-    own = [resample(joints[c.joints]) for c in chains]
+    mirrored = np.array([resample(images[c.joints]) for c in chains])
+    own = np.array([resample(joints[c.joints]) for c in chains])
+    # errors[a, b]: the largest gap between chain a's mirror image and chain b; pairs with
+    # equal numbers of joints first (then every bone has its mirror).
+    errors = np.sqrt(np.sum((mirrored[:, None] - own[None, :]) ** 2, axis=3)).max(axis=2)
+    counts = np.array([len(c.joints) for c in chains])
+    errors = (errors * np.where(counts[:, None] == counts[None, :], 1.0, 1.5)).tolist()
     for a, chain in enumerate(chains):
         if chain.partner is not None:
             continue
@@ -140,13 +157,8 @@ def pair_chains(chains, joints, plane, tolerance):
             continue  # on the plane: a central chain
         best, best_error = None, tolerance
         for b, other in enumerate(chains):
-            if b == a or other.partner is not None:
-                continue
-            error = np.max(np.linalg.norm(mirrored[a] - own[b], axis=1))
-            # Equal numbers of joints first: then every bone has its mirror.
-            error *= 1.0 if len(other.joints) == len(chain.joints) else 1.5
-            if error <= best_error:
-                best, best_error = b, error
+            if b != a and other.partner is None and errors[a][b] <= best_error:
+                best, best_error = b, errors[a][b]
         if best is not None:
             left = np.mean(signed) > 0
             chain.partner, chains[best].partner = best, a
