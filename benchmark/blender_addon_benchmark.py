@@ -95,7 +95,7 @@ with tempfile.TemporaryDirectory() as folder:
                      statistics.median(operator)))
 
 load = os.getloadavg()
-print("| mesh | faces | bones | skeletonize --weights (s) | Rig Selected Meshes (s) | ratio |")
+print("| mesh | triangles | bones | skeletonize --weights (s) | Rig Selected Meshes (s) | ratio |")
 print("|---|---|---|---|---|---|")
 for name, faces, bones, alone, operator in rows:
     print("| %s | %d | %d | %.3f | %.3f | %.2f |" % (name, faces, bones, alone, operator, operator / alone))
