@@ -11,6 +11,7 @@
 #include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
 #include <CGAL/Geodesic_skeleton/IO/gltf.h>
+#include <CGAL/Geodesic_skeleton/IO/internal/indexed_soup.h>
 #include <CGAL/Geodesic_skeleton/IO/json.h>
 #include <CGAL/Geodesic_skeleton/IO/read_control_skeleton_json.h>
 #include <CGAL/Geodesic_skeleton/IO/read_mesh.h>
@@ -35,6 +36,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -135,54 +137,81 @@ std::vector<std::array<Index, 3>> faces_of(const py::handle& object, std::size_t
 
 // ---- The mesh ---------------------------------------------------------------------------
 
-// A mesh built from V and F, and the mesh vertex of each row of V: row i is vertex i unless
-// the triangles had to be repaired (a soup that is not an oriented manifold: merged
-// duplicates, split non-manifold vertices), then the vertex at the same place, or the
-// nearest one for a point the repair dropped.
+// A mesh built from V and F, and the mesh vertex of each row of V. As IO::read_mesh()
+// builds the mesh of a file: when the triangles are an oriented manifold, directly from
+// them (the same mesh as read_mesh()'s, so the same rig as skeletonize's), row i being
+// vertex i; otherwise repaired (merged duplicates, split non-manifold vertices, faces
+// oriented), each row then taking the vertex at its position, or the nearest one for a
+// point the repair dropped.
+//
+// This uses read_mesh()'s own fast builder, from IO/internal/indexed_soup.h (an internal
+// header): CGAL's polygon_soup_to_polygon_mesh() gives the same mesh, but its search of the
+// mesh for every edge costs about as much as the whole chain on the demo cow.
 struct Input_mesh
 {
   Mesh mesh;
   std::vector<vertex_descriptor> vertex_of_row;
+  double milliseconds = 0; // building the mesh, as input_mesh() times it
 
   // Must be built without the GIL: it copies nothing from Python.
-  Input_mesh(std::vector<std::array<double, 3>> V, std::vector<std::array<Index, 3>> F)
+  Input_mesh(std::vector<std::array<double, 3>> V, const std::vector<std::array<Index, 3>>& F)
   {
     namespace PMP = CGAL::Polygon_mesh_processing;
+    namespace soup_io = CGAL::Geodesic_skeleton::IO::internal;
+    soup_io::Indexed_soup soup;
+    soup.points = std::move(V);
+    soup.corners.reserve(3 * F.size());
+    soup.offsets.reserve(F.size() + 1);
+    for(const auto& f : F)
+    {
+      for(const Index i : f)
+        soup.corners.push_back(static_cast<std::uint32_t>(i));
+      soup.close_polygon();
+    }
+    const std::size_t rows = soup.points.size();
+    {
+      const soup_io::Directed_edge_table edges(soup);
+      if(soup_io::is_oriented_manifold(soup, edges))
+      {
+        soup_io::build_mesh_from_manifold_soup(soup, edges, mesh, get(CGAL::vertex_point, mesh));
+        vertex_of_row.reserve(rows);
+        for(std::size_t i = 0; i < rows; ++i)
+          vertex_of_row.push_back(vertex_descriptor(static_cast<Mesh::size_type>(i)));
+        return;
+      }
+    }
     std::vector<Point> points;
-    points.reserve(V.size());
-    for(const auto& p : V)
+    points.reserve(rows);
+    for(const auto& p : soup.points)
       points.emplace_back(p[0], p[1], p[2]);
     std::vector<std::vector<std::size_t>> polygons(F.size());
     for(std::size_t f = 0; f < F.size(); ++f)
       polygons[f] = {std::size_t(F[f][0]), std::size_t(F[f][1]), std::size_t(F[f][2])};
+    const std::vector<Point> row_points = points;
     if(PMP::is_polygon_soup_a_polygon_mesh(polygons))
-    {
       PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-      vertex_of_row.reserve(V.size());
-      for(std::size_t i = 0; i < V.size(); ++i)
-        vertex_of_row.push_back(vertex_descriptor(static_cast<Mesh::size_type>(i)));
-      return;
+    else
+    {
+      PMP::repair_polygon_soup(points, polygons);
+      PMP::orient_polygon_soup(points, polygons);
+      PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+      if(num_faces(mesh) == 0)
+        throw std::invalid_argument("the mesh has no faces (every face is degenerate)");
     }
-    const std::vector<Point> rows = points;
-    PMP::repair_polygon_soup(points, polygons);
-    PMP::orient_polygon_soup(points, polygons);
-    PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-    if(num_faces(mesh) == 0)
-      throw std::invalid_argument("the mesh has no faces (every face is degenerate)");
     std::map<Point, vertex_descriptor> vertex_at;
     for(vertex_descriptor v : vertices(mesh))
       vertex_at.emplace(mesh.point(v), v);
-    vertex_of_row.resize(rows.size());
-    for(std::size_t i = 0; i < rows.size(); ++i)
+    vertex_of_row.resize(rows);
+    for(std::size_t i = 0; i < rows; ++i)
     {
-      if(const auto found = vertex_at.find(rows[i]); found != vertex_at.end())
+      if(const auto found = vertex_at.find(row_points[i]); found != vertex_at.end())
       {
         vertex_of_row[i] = found->second;
         continue;
       }
       double best = HUGE_VAL;
       for(vertex_descriptor v : vertices(mesh))
-        if(const double d = CGAL::squared_distance(rows[i], mesh.point(v)); d < best)
+        if(const double d = CGAL::squared_distance(row_points[i], mesh.point(v)); d < best)
         {
           best = d;
           vertex_of_row[i] = v;
@@ -223,7 +252,12 @@ Input_mesh input_mesh(const py::handle& V, const py::handle& F)
 {
   auto points = points_of(V, "V");
   auto faces = faces_of(F, points.size());
-  return without_gil([&] { return Input_mesh(std::move(points), std::move(faces)); });
+  return without_gil([&] {
+    const auto start = std::chrono::steady_clock::now();
+    Input_mesh input(std::move(points), faces);
+    input.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return input;
+  });
 }
 
 // ---- Settings ---------------------------------------------------------------------------
@@ -291,6 +325,7 @@ struct Rig
   Curve curve;
   std::vector<std::pair<std::string, double>> timings_ms;
   double chain_ms = 0;
+  double mesh_ms = 0; // building the Surface_mesh from V and F
 
   std::size_t joints() const { return num_vertices(control); }
   std::size_t bones() const { return num_edges(control); }
@@ -605,6 +640,8 @@ PYBIND11_MODULE(geodesic_skeleton, m)
       }, "the chain's stages and their milliseconds (empty for a rig read from JSON)")
       .def_property_readonly("chain_ms", [](const Rig& r) { return r.chain_ms; },
                              "milliseconds of the C++ extract_control_skeleton() call (0 for a rig read from JSON)")
+      .def_property_readonly("mesh_ms", [](const Rig& r) { return r.mesh_ms; },
+                             "milliseconds of building the C++ mesh from V and F (0 for a rig read from JSON)")
       .def("to_json", [](const Rig& r) { return r.json().dump(1); },
            "The rig in skeletonize's JSON contract: {\"skeleton\": {points, radii, edges}, \"control\": {joints, "
            "bones, cut_bones, roots}}.")
@@ -664,6 +701,7 @@ PYBIND11_MODULE(geodesic_skeleton, m)
       const gs::Control_skeleton_report report = settings::extract_control_skeleton(input.mesh, rig.control, s, outputs);
       rig.timings_ms = report.timings_ms;
       rig.chain_ms = report.total_ms;
+      rig.mesh_ms = input.milliseconds;
       return rig;
     });
   }, py::arg("V"), py::arg("F"),
