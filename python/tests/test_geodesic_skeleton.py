@@ -1,6 +1,7 @@
 """The Python module against skeletonize and against what its functions promise."""
 
 import concurrent.futures
+import hashlib
 import json
 import shutil
 import subprocess
@@ -345,6 +346,25 @@ def test_voxel_stages_are_the_chains(cow, cli):
 # ---- Threads ----------------------------------------------------------------------------
 
 
+def two_cores_are_free():
+    """Whether two threads that need no GIL (hashlib releases it) run faster than one after
+    the other: not on a machine that other work keeps busy (Linux gives each session a share
+    of the cores, whatever its threads)."""
+    data = bytes(8 << 20)
+
+    def work():
+        for _ in range(6):
+            hashlib.sha256(data).digest()
+
+    start = time.perf_counter()
+    work(), work()
+    sequential = time.perf_counter() - start
+    start = time.perf_counter()
+    with concurrent.futures.ThreadPoolExecutor(2) as pool:
+        list(pool.map(lambda _: work(), range(2)))
+    return time.perf_counter() - start < 0.8 * sequential
+
+
 def test_two_threads_give_the_same_rigs_in_less_time():
     meshes = [mesh(name) for name in ["cow", "elephant", "elk", "hand"]]
 
@@ -371,6 +391,9 @@ def test_two_threads_give_the_same_rigs_in_less_time():
         times.append((t1, t2))
         if t2 < t1 * 0.9:
             break
+    if min(t2 / t1 for t1, t2 in times) >= 0.9 and not two_cores_are_free():
+        pytest.skip("other work keeps the cores busy: two threads of hashlib are not faster either "
+                    "(test_the_gil_is_released_while_the_cpp_runs checks the GIL whatever the load); %s" % times)
     assert min(t2 / t1 for t1, t2 in times) < 0.9, times
 
 
