@@ -22,8 +22,10 @@ with threads.
 2. Rigging N demo meshes (read_mesh + extract_control_skeleton + skinning_weights) with a
    pool of 1 thread and of 2 threads: the wall times and their ratio. The meshes are the N
    smallest demo meshes (by faces) with at least 500 faces that rig without an error. The
-   load average of the machine is printed before and after, since other work on it skews
-   the ratio.
+   load average of the machine is printed before and after, and the cores the process got
+   on average (its CPU time over the wall time), since other work on the machine skews the
+   ratio: Linux shares the cores between sessions (autogroup), so a busy machine gives the
+   process about one core whatever its threads.
 """
 
 import argparse
@@ -101,10 +103,13 @@ def rig(path):
 
 
 def rig_all(paths, threads):
-    start = time.perf_counter()
+    """The wall time, the cores the process got on average (its CPU time / the wall time),
+    and the rigs' sizes."""
+    start, cpu = time.perf_counter(), time.process_time()
     with concurrent.futures.ThreadPoolExecutor(threads) as pool:
         results = list(pool.map(rig, paths))
-    return time.perf_counter() - start, results
+    wall = time.perf_counter() - start
+    return wall, (time.process_time() - cpu) / wall, results
 
 
 def pick_meshes(data, count):
@@ -135,12 +140,13 @@ def threads(data, count, repeats):
           % (len(paths), min(faces), max(faces), sum(faces), load()))
     one, two = [], []
     for _ in range(repeats):
-        t1, r1 = rig_all(paths, 1)
-        t2, r2 = rig_all(paths, 2)
+        t1, c1, r1 = rig_all(paths, 1)
+        t2, c2, r2 = rig_all(paths, 2)
         assert r1 == r2, "the rigs differ between 1 and 2 threads"
         one.append(t1)
         two.append(t2)
-        print("   1 thread %.2f s, 2 threads %.2f s: %.2f times faster (%s)" % (t1, t2, t1 / t2, load()))
+        print("   1 thread %.2f s (%.2f cores busy), 2 threads %.2f s (%.2f cores busy): %.2f times faster (%s)"
+              % (t1, c1, t2, c2, t1 / t2, load()))
     print("   best: 1 thread %.2f s, 2 threads %.2f s: %.2f times faster" % (min(one), min(two), min(one) / min(two)))
     return min(one) / min(two)
 
