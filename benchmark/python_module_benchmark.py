@@ -25,7 +25,8 @@ with threads.
    load average of the machine is printed before and after, and the cores the process got
    on average (its CPU time over the wall time), since other work on the machine skews the
    ratio: Linux shares the cores between sessions (autogroup), so a busy machine gives the
-   process about one core whatever its threads.
+   process about one core whatever its threads. As a control, skeletonize --batch runs the
+   chain on the same meshes with 1 and 2 (OpenMP) threads.
 """
 
 import argparse
@@ -133,7 +134,23 @@ def pick_meshes(data, count):
     return chosen
 
 
-def threads(data, count, repeats):
+def batch_control(skeletonize, paths):
+    """skeletonize --batch on the same meshes (the chain only, OpenMP threads): how much two
+    threads of the C++ program gain on this machine now."""
+    with tempfile.TemporaryDirectory() as folder:
+        listing = pathlib.Path(folder) / "meshes.txt"
+        listing.write_text("".join(str(p) + "\n" for p in paths))
+        times = []
+        for threads in (1, 2):
+            start = time.perf_counter()
+            subprocess.run([str(skeletonize), "--batch", str(listing), "-o", folder + "/out", "--threads", str(threads)],
+                           check=True, capture_output=True)
+            times.append(time.perf_counter() - start)
+    print("   control: skeletonize --batch (chain only) --threads 1 %.2f s, --threads 2 %.2f s: %.2f times faster (%s)"
+          % (times[0], times[1], times[0] / times[1], load()))
+
+
+def threads(data, count, repeats, skeletonize):
     paths = pick_meshes(data, count)
     faces = [len(gs.read_mesh(str(p))[1]) for p in paths]
     print("2. %d demo meshes (%d to %d faces, %d in all), read + extract + weights, %s"
@@ -148,6 +165,8 @@ def threads(data, count, repeats):
         print("   1 thread %.2f s (%.2f cores busy), 2 threads %.2f s (%.2f cores busy): %.2f times faster (%s)"
               % (t1, c1, t2, c2, t1 / t2, load()))
     print("   best: 1 thread %.2f s, 2 threads %.2f s: %.2f times faster" % (min(one), min(two), min(one) / min(two)))
+    if skeletonize.exists():
+        batch_control(skeletonize, paths)
     return min(one) / min(two)
 
 
@@ -164,7 +183,7 @@ def main():
     print("   under 5 %%: the module over the C++ (mesh + chain) %s; the call over the chain alone %s"
           % ("yes" if over_cpp < 0.05 else "NO", "yes" if over_chain < 0.05 else "NO"))
     if not arguments.skip_threads:
-        speedup = threads(arguments.data, arguments.meshes, arguments.repeats)
+        speedup = threads(arguments.data, arguments.meshes, arguments.repeats, arguments.skeletonize)
         print("   2 threads at least 1.7 times faster: %s" % ("yes" if speedup >= 1.7 else "NO"))
     return 0
 
