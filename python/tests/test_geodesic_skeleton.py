@@ -435,3 +435,22 @@ def test_the_module_imports_in_blender():
                             capture_output=True, text=True, timeout=120)
     assert result.returncode == 0, result.stdout + result.stderr
     assert "BLENDER_RIG" in result.stdout
+
+
+# ---- Type stubs -------------------------------------------------------------------------
+
+
+def test_the_stubs_name_everything_the_module_has():
+    import ast
+    import pathlib
+
+    stub = ast.parse((pathlib.Path(__file__).resolve().parents[1] / "geodesic_skeleton.pyi").read_text())
+    names = {node.name for node in stub.body if isinstance(node, (ast.FunctionDef, ast.ClassDef))}
+    names |= {node.target.id for node in stub.body if isinstance(node, ast.AnnAssign)}
+    public = {name for name in dir(gs) if not name.startswith("_")}
+    assert public == names
+    for cls in ("Rig", "Voxels", "DistanceField"):
+        members = {n.name for c in stub.body if isinstance(c, ast.ClassDef) and c.name == cls
+                   for n in c.body if isinstance(n, ast.FunctionDef)}
+        assert {n for n in dir(getattr(gs, cls)) if not n.startswith("_")} == members - {"__len__"}, cls
+    assert all(getattr(gs, name).__doc__ for name in public if callable(getattr(gs, name)))
