@@ -127,6 +127,20 @@ def test_gltf_is_the_clis(cow, cli, work_dir):
         gs.write_gltf(str(work_dir / "cow.txt"), V, F, rig, gs.skinning_weights(V, F, rig))
 
 
+def test_scene_formats_are_read_as_skeletonize_reads_them(cow, work_dir):
+    """A .glb (read through Assimp, as skeletonize reads it) gives skeletonize's rig."""
+    V, F, rig = cow
+    path = work_dir / "cow_scene.glb"
+    gs.write_gltf(str(path), V, F, rig, gs.skinning_weights(V, F, rig))
+    V2, F2 = gs.read_mesh(str(path))
+    assert V2.dtype == np.float64 and F2.dtype == np.int64 and len(F2) == len(F)
+    code, stderr = run_skeletonize(path, "-o", path.with_suffix(".json"))
+    assert code == 0, stderr
+    assert_rig_is_report(gs.extract_control_skeleton(V2, F2), json.loads(path.with_suffix(".json").read_text()))
+    with pytest.raises(ValueError, match="garbage.fbx: the file cannot be read as a scene"):
+        gs.read_mesh(str(BAD_MESHES / "garbage.fbx"))
+
+
 def test_json_round_trip(cow, cli, work_dir):
     V, F, rig = cow
     again = gs.Rig.from_json(rig.to_json())
