@@ -17,6 +17,7 @@ with threads.
    Two ratios, medians over the runs: (module - chain) / chain, all that the call costs over
    the C++ chain; and (module - chain - mesh) / (chain + mesh), what the module costs over
    the C++ that a C++ program with the same arrays runs (build the mesh, run the chain).
+   Then the same call on a geodesic_skeleton.Mesh built once: its time over the chain's.
    For reference, the chain's time that skeletonize reports for the same mesh (its JSON
    timings_ms.total, median over runs of the program) is printed too.
 2. Rigging N demo meshes (read_mesh + extract_control_skeleton + skinning_weights) with a
@@ -81,6 +82,16 @@ def overhead(data, skeletonize, runs):
     print("   module over the C++ (mesh + chain): median %.2f %% (run by run: %.2f %% to %.2f %%), %.3f ms"
           % (100 * statistics.median(ratios), 100 * min(ratios), 100 * max(ratios),
              statistics.median(m - c - b for m, c, b in zip(module_ms, chain_ms, mesh_ms))))
+    built = gs.Mesh(V, F)
+    with_mesh = []
+    for _ in range(runs):
+        start = time.perf_counter()
+        rig = built.extract_control_skeleton()
+        arrays = (rig.joints, rig.parents, rig.radii, rig.kinds, rig.bones, rig.curve_points, rig.curve_radii,
+                  rig.curve_edges)
+        with_mesh.append(((time.perf_counter() - start) * 1000 - rig.chain_ms) / rig.chain_ms)
+    print("   with the mesh built once (geodesic_skeleton.Mesh): the call over the chain: median %.2f %%"
+          % (100 * statistics.median(with_mesh)))
     if skeletonize.exists():
         cli = []
         with tempfile.TemporaryDirectory() as folder:

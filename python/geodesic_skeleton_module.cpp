@@ -40,6 +40,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -532,6 +533,72 @@ py::array_t<std::int32_t> keys_array(const std::vector<gs::Voxel_key>& keys)
   return out;
 }
 
+// The functions on a built mesh: those of the module build it from V and F, Mesh's use its own.
+Rig rig_of_mesh(const Input_mesh& input, const settings::Settings& s)
+{
+  return without_gil([&] {
+    Rig rig;
+    settings::Chain_outputs<Mesh, Point> outputs;
+    outputs.curve = &rig.curve;
+    const gs::Control_skeleton_report report = settings::extract_control_skeleton(input.mesh, rig.control, s, outputs);
+    rig.timings_ms = report.timings_ms;
+    rig.chain_ms = report.total_ms;
+    rig.mesh_ms = input.milliseconds;
+    return rig;
+  });
+}
+
+py::object weights_of_mesh(const Input_mesh& input, const Rig& rig, bool sparse, const settings::Settings& s)
+{
+  const std::vector<gs::Bone_weights> weights = without_gil([&] {
+    std::vector<gs::Bone_weights> w(num_vertices(input.mesh));
+    std::vector<int> segment(num_vertices(input.mesh), -1);
+    settings::compute_skinning_weights(input.mesh, rig.control, s, nullptr,
+                                       boost::make_iterator_property_map(w.begin(), get(CGAL::vertex_index, input.mesh)),
+                                       boost::make_iterator_property_map(segment.begin(), get(CGAL::vertex_index, input.mesh)));
+    return w;
+  });
+  const std::size_t rows = input.vertex_of_row.size(), bones = rig.bones();
+  if(!sparse)
+  {
+    auto out = new_array<double>({py::ssize_t(rows), py::ssize_t(bones)});
+    std::fill(out.mutable_data(), out.mutable_data() + rows * bones, 0.);
+    for(std::size_t r = 0; r < rows; ++r)
+    {
+      const gs::Bone_weights& w = weights[std::size_t(input.vertex_of_row[r])];
+      for(std::size_t i = 0; i < w.size(); ++i)
+        out.mutable_data()[r * bones + w.bone[i]] = w.weight[i];
+    }
+    return std::move(out);
+  }
+  std::vector<Index> row_of, column;
+  std::vector<double> value;
+  for(std::size_t r = 0; r < rows; ++r)
+  {
+    const gs::Bone_weights& w = weights[std::size_t(input.vertex_of_row[r])];
+    for(std::size_t i = 0; i < w.size(); ++i)
+    {
+      row_of.push_back(Index(r));
+      column.push_back(Index(w.bone[i]));
+      value.push_back(w.weight[i]);
+    }
+  }
+  const py::module_ scipy_sparse = py::module_::import("scipy.sparse");
+  return scipy_sparse.attr("csr_matrix")(
+      py::make_tuple(py::array(py::cast(value)), py::make_tuple(py::array(py::cast(row_of)), py::array(py::cast(column)))),
+      py::arg("shape") = py::make_tuple(rows, bones));
+}
+
+void write_gltf_of_mesh(const std::string& path, const Input_mesh& input, const Rig& rig, const py::object& W)
+{
+  const std::vector<gs::Bone_weights> weights = bone_weights_of(W, input, rig.bones());
+  without_gil([&] {
+    gs::IO::write_glTF(path, input.mesh, rig.control,
+                       boost::make_iterator_property_map(weights.begin(), get(CGAL::vertex_index, input.mesh)));
+    return 0;
+  });
+}
+
 const char* const rig_doc = R"(A control skeleton: joints, parents and bones, with the curve skeleton it was split from.
 
 Arrays are copies (numpy): ``joints`` (J x 3), ``parents`` (J, -1 for a root), ``radii`` (J, the
@@ -693,17 +760,7 @@ PYBIND11_MODULE(geodesic_skeleton, m)
 
   m.def("extract_control_skeleton", [](const py::object& V, const py::object& F, const py::kwargs& kwargs) {
     const settings::Settings s = settings_of(kwargs, "extract_control_skeleton", chain_setting, true);
-    Input_mesh input = input_mesh(V, F);
-    return without_gil([&] {
-      Rig rig;
-      settings::Chain_outputs<Mesh, Point> outputs;
-      outputs.curve = &rig.curve;
-      const gs::Control_skeleton_report report = settings::extract_control_skeleton(input.mesh, rig.control, s, outputs);
-      rig.timings_ms = report.timings_ms;
-      rig.chain_ms = report.total_ms;
-      rig.mesh_ms = input.milliseconds;
-      return rig;
-    });
+    return rig_of_mesh(input_mesh(V, F), s);
   }, py::arg("V"), py::arg("F"),
         "Extracts the animation control skeleton of the mesh (V, F): the package's whole chain. Settings: the "
         "named parameters of extract_control_skeleton() (see SETTINGS: resolution, spur_length_factor, ...; "
@@ -711,46 +768,9 @@ PYBIND11_MODULE(geodesic_skeleton, m)
         "Returns a Rig.");
 
   m.def("skinning_weights", [](const py::object& V, const py::object& F, const Rig& rig, bool sparse,
-                               const py::kwargs& kwargs) -> py::object {
+                               const py::kwargs& kwargs) {
     const settings::Settings s = settings_of(kwargs, "skinning_weights", weights_setting, true);
-    Input_mesh input = input_mesh(V, F);
-    const std::vector<gs::Bone_weights> weights = without_gil([&] {
-      std::vector<gs::Bone_weights> w(num_vertices(input.mesh));
-      std::vector<int> segment(num_vertices(input.mesh), -1);
-      settings::compute_skinning_weights(input.mesh, rig.control, s, nullptr,
-                                         boost::make_iterator_property_map(w.begin(), get(CGAL::vertex_index, input.mesh)),
-                                         boost::make_iterator_property_map(segment.begin(), get(CGAL::vertex_index, input.mesh)));
-      return w;
-    });
-    const std::size_t rows = input.vertex_of_row.size(), bones = rig.bones();
-    if(!sparse)
-    {
-      auto out = new_array<double>({py::ssize_t(rows), py::ssize_t(bones)});
-      std::fill(out.mutable_data(), out.mutable_data() + rows * bones, 0.);
-      for(std::size_t r = 0; r < rows; ++r)
-      {
-        const gs::Bone_weights& w = weights[std::size_t(input.vertex_of_row[r])];
-        for(std::size_t i = 0; i < w.size(); ++i)
-          out.mutable_data()[r * bones + w.bone[i]] = w.weight[i];
-      }
-      return std::move(out);
-    }
-    std::vector<Index> row_of, column;
-    std::vector<double> value;
-    for(std::size_t r = 0; r < rows; ++r)
-    {
-      const gs::Bone_weights& w = weights[std::size_t(input.vertex_of_row[r])];
-      for(std::size_t i = 0; i < w.size(); ++i)
-      {
-        row_of.push_back(Index(r));
-        column.push_back(Index(w.bone[i]));
-        value.push_back(w.weight[i]);
-      }
-    }
-    const py::module_ scipy_sparse = py::module_::import("scipy.sparse");
-    return scipy_sparse.attr("csr_matrix")(
-        py::make_tuple(py::array(py::cast(value)), py::make_tuple(py::array(py::cast(row_of)), py::array(py::cast(column)))),
-        py::arg("shape") = py::make_tuple(rows, bones));
+    return weights_of_mesh(input_mesh(V, F), rig, sparse, s);
   }, py::arg("V"), py::arg("F"), py::arg("rig"), py::kw_only(), py::arg("sparse") = false,
         "Skinning weights of the mesh (V, F) for the rig's bones (bone heat through the solid): an (n x B) "
         "float64 array, or a scipy.sparse.csr_matrix with sparse=True; each row sums to 1 (the weights are "
@@ -759,16 +779,35 @@ PYBIND11_MODULE(geodesic_skeleton, m)
 
   m.def("write_gltf", [](const std::string& path, const py::object& V, const py::object& F, const Rig& rig,
                          const py::object& W) {
-    Input_mesh input = input_mesh(V, F);
-    const std::vector<gs::Bone_weights> weights = bone_weights_of(W, input, rig.bones());
-    without_gil([&] {
-      gs::IO::write_glTF(path, input.mesh, rig.control,
-                         boost::make_iterator_property_map(weights.begin(), get(CGAL::vertex_index, input.mesh)));
-      return 0;
-    });
+    write_gltf_of_mesh(path, input_mesh(V, F), rig, W);
   }, py::arg("path"), py::arg("V"), py::arg("F"), py::arg("rig"), py::arg("W"),
         "Writes the mesh skinned to the rig as glTF 2.0 (.glb binary or .gltf), as skeletonize -o does; W: the "
         "(n x B) weights, dense or SciPy sparse, at most 8 non-zero per row.");
+
+  py::class_<Input_mesh, std::shared_ptr<Input_mesh>>(
+      m, "Mesh",
+      "The C++ mesh of (V, F), built once (checked, repaired if need be, as the functions build it) for "
+      "several calls: rigging, skinning and writing a mesh build it once instead of three times.")
+      .def(py::init([](const py::object& V, const py::object& F) { return std::make_shared<Input_mesh>(input_mesh(V, F)); }),
+           py::arg("V"), py::arg("F"))
+      .def_property_readonly("num_vertices", [](const Input_mesh& i) { return num_vertices(i.mesh); },
+                             "vertices of the C++ mesh (the rows of V, unless the repair merged or split some)")
+      .def_property_readonly("num_faces", [](const Input_mesh& i) { return num_faces(i.mesh); })
+      .def("extract_control_skeleton", [](const Input_mesh& input, const py::kwargs& kwargs) {
+        Rig rig = rig_of_mesh(input, settings_of(kwargs, "extract_control_skeleton", chain_setting, true));
+        rig.mesh_ms = 0; // built before
+        return rig;
+      }, "extract_control_skeleton(V, F, **settings) on this mesh.")
+      .def("skinning_weights", [](const Input_mesh& input, const Rig& rig, bool sparse, const py::kwargs& kwargs) {
+        return weights_of_mesh(input, rig, sparse, settings_of(kwargs, "skinning_weights", weights_setting, true));
+      }, py::arg("rig"), py::kw_only(), py::arg("sparse") = false, "skinning_weights(V, F, rig, ...) on this mesh.")
+      .def("write_gltf", [](const Input_mesh& input, const std::string& path, const Rig& rig, const py::object& W) {
+        write_gltf_of_mesh(path, input, rig, W);
+      }, py::arg("path"), py::arg("rig"), py::arg("W"), "write_gltf(path, V, F, rig, W) of this mesh.")
+      .def("__repr__", [](const Input_mesh& i) {
+        return "<geodesic_skeleton.Mesh: " + std::to_string(num_vertices(i.mesh)) + " vertices, " +
+               std::to_string(num_faces(i.mesh)) + " faces>";
+      });
 
   m.def("geodesic_distances", [](const py::object& V, const py::object& F, const py::object& sources) {
     Input_mesh input = input_mesh(V, F);

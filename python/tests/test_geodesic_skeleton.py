@@ -162,6 +162,30 @@ def test_json_round_trip(cow, cli, work_dir):
         gs.Rig.from_json("{")
 
 
+def test_a_mesh_built_once_gives_what_the_functions_give(cow, work_dir):
+    V, F, rig = cow
+    built = gs.Mesh(V, F)
+    assert (built.num_vertices, built.num_faces) == (len(V), len(F))
+    again = built.extract_control_skeleton()
+    assert same_rig(again, rig) and again.mesh_ms == 0 and rig.mesh_ms > 0
+    assert same_rig(built.extract_control_skeleton(resolution=32), gs.extract_control_skeleton(V, F, resolution=32))
+    W = built.skinning_weights(rig)
+    assert np.array_equal(W, gs.skinning_weights(V, F, rig))
+    assert np.array_equal(built.skinning_weights(rig, sparse=True, sharpness=3).toarray(),
+                          gs.skinning_weights(V, F, rig, sharpness=3))
+    ours, theirs = work_dir / "cow_mesh.glb", work_dir / "cow_functions.glb"
+    built.write_gltf(str(ours), rig, W)
+    gs.write_gltf(str(theirs), V, F, rig, W)
+    assert ours.read_bytes() == theirs.read_bytes()
+    with pytest.raises(ValueError, match="extract_control_skeleton: resolution must be"):
+        built.extract_control_skeleton(resolution=2)
+    with pytest.raises(ValueError, match="no faces"):
+        gs.Mesh(V, F[:0])
+    # Threads may share it.
+    with concurrent.futures.ThreadPoolExecutor(2) as pool:
+        assert all(same_rig(r, rig) for r in pool.map(lambda _: built.extract_control_skeleton(), range(4)))
+
+
 # ---- Array-likes ------------------------------------------------------------------------
 
 
