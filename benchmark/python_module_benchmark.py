@@ -20,7 +20,8 @@ with threads.
    Then the same call on a geodesic_skeleton.Mesh built once: its time over the chain's.
    For reference, the chain's time that skeletonize reports for the same mesh (its JSON
    timings_ms.total, median over runs of the program) is printed too.
-2. Rigging N demo meshes (read_mesh + extract_control_skeleton + skinning_weights) with a
+2. Rigging N demo meshes (read_mesh, then extract_control_skeleton and skinning_weights on
+   a geodesic_skeleton.Mesh) with a
    pool of 1 thread and of 2 threads: the wall times and their ratio. The meshes are the N
    smallest demo meshes (by faces) with at least 500 faces that rig without an error. The
    load average of the machine is printed before and after, and the cores the process got
@@ -108,9 +109,9 @@ def overhead(data, skeletonize, runs):
 
 
 def rig(path):
-    V, F = gs.read_mesh(str(path))
-    rig = gs.extract_control_skeleton(V, F)
-    W = gs.skinning_weights(V, F, rig, sparse=True)
+    mesh = gs.Mesh(*gs.read_mesh(str(path)))
+    rig = mesh.extract_control_skeleton()
+    W = mesh.skinning_weights(rig, sparse=True)
     return len(rig.kinds), W.nnz
 
 
