@@ -9,6 +9,7 @@
 // mesh skinned to its skeleton). See --help.
 
 #include "skeletonize_formats.h"
+#include "skeletonize_settings.h"
 
 #include <CGAL/Geodesic_skeleton.h>
 #include <CGAL/Geodesic_skeleton/IO/json.h>
@@ -47,8 +48,6 @@
 #endif
 
 namespace gs = CGAL::Geodesic_skeleton;
-namespace params = CGAL::Geodesic_skeleton::parameters;
-namespace ranges = CGAL::Geodesic_skeleton::parameter_ranges;
 
 using skeletonize_formats::Kernel;
 using skeletonize_formats::Mesh;
@@ -63,94 +62,26 @@ struct Usage_error : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
-// The defaults and valid ranges are the library's (CGAL/Geodesic_skeleton/parameter_ranges.h).
-struct Options
+// The chain's and the weights' settings are skeletonize_settings.h's (the library's
+// defaults and ranges); the rest says what to read and write.
+struct Options : skeletonize_settings::Settings
 {
   std::string input, output, svg, svg_stage = "control";
   std::string batch;       // a folder of meshes or a file listing them, one per line
   int threads = 0;         // batch mode's threads; 0: one per core
   bool reeb_graph = false; // compute the Reeb graph (a comparison baseline) and report it
-  int resolution = gs::default_voxel_resolution;
-  double small_piece_fraction = ranges::small_piece_fraction.default_value;
-  double spur_length_factor = ranges::spur_length_factor.default_value;
-  double limb_protrusion_factor = ranges::limb_protrusion_factor.default_value;
-  double sheet_lobe_reach_factor = ranges::sheet_lobe_reach_factor.default_value;
-  int level_of_detail_resolution = int(ranges::level_of_detail_resolution.default_value);
-  std::optional<int> smoothing_window; // none: the library's default for the resolution
-  std::optional<double> thin_part_radius; // none: the library's default for the resolution
-  double bend_threshold = ranges::bend_threshold.default_value;
-  double straightness_tolerance = ranges::straightness_tolerance.default_value;
-  double minimum_bone_length_factor = ranges::minimum_bone_length_factor.default_value;
-  double maximum_bone_length_factor = ranges::maximum_bone_length_factor.default_value;
-  double minimum_bone_length_of_piece_factor = ranges::minimum_bone_length_of_piece_factor.default_value;
-  double tip_joint_setback = ranges::tip_joint_setback.default_value;
-  double joint_spacing_factor = ranges::joint_spacing_factor.default_value;
-  std::optional<double> smallest_radius; // world units; none: extract_control_skeleton()'s default
-  std::size_t reeb_intervals = static_cast<std::size_t>(ranges::number_of_reeb_intervals.default_value);
-  bool fill_holes = true;
-  bool keep_surface_voxels = true;
   // Skinning: a given skeleton instead of the extracted one, the weights in the report.
   std::string skeleton;
   bool weights = false;
-  int max_bones_per_vertex = static_cast<int>(ranges::max_bones_per_vertex.default_value);
-  double sharpness = ranges::sharpness.default_value;
-  double minimum_weight = ranges::minimum_weight.default_value;
-  double influence_ratio = ranges::influence_ratio.default_value;
 };
 
-// The numeric options: option, library range, the words of --help.
-struct Numeric_option
-{
-  const char* option;
-  const char* metavar;
-  const gs::Parameter_range& range;
-  const char* help;
-  const char* default_text = nullptr; // when the default is not the range's: its words
-};
-const Numeric_option numeric_options[] = {
-    {"--resolution", "N", ranges::resolution, "the longest principal extent of the mesh, in voxels"},
-    {"--small-pieces", "F", ranges::small_piece_fraction,
-     "drop detached pieces smaller than F times the largest (0 keeps all)"},
-    {"--thin-part-radius", "R", ranges::thin_part_radius,
-     "thinning: parts of MAT radius up to R voxels are thin and burn from their rim",
-     "1.41 at resolution 64 and below, scaled with it: 2.83 at 128"},
-    {"--spur-length", "F", ranges::spur_length_factor, "snip end branches shorter than F MAT radii"},
-    {"--limb-protrusion", "F", ranges::limb_protrusion_factor,
-     "level of detail: snip end branches reaching less than F largest MAT radii out of their junction"},
-    {"--sheet-lobe-reach", "F", ranges::sheet_lobe_reach_factor,
-     "a branch into each lobe of a thick plate reaching F largest MAT radii out of the thinned skeleton's balls (0: none)"},
-    {"--level-of-detail-resolution", "N", ranges::level_of_detail_resolution,
-     "level of detail: the skeleton's branches are decided at N; a finer resolution routes them on its grid (0: off)"},
-    {"--smoothing-window", "W", ranges::smoothing_window, "points averaged along branches",
-     "5 at resolution 64, scaled with it: 9 at 128"},
-    {"--bend-threshold", "T", ranges::bend_threshold, "chord-to-point accumulation that makes a joint"},
-    {"--straightness", "S", ranges::straightness_tolerance, "allowed bone deviation in MAT radii (at least a quarter of the thickest part's)"},
-    {"--min-bone-length", "F", ranges::minimum_bone_length_factor, "every bone is longer than F MAT radii"},
-    {"--max-bone-length", "F", ranges::maximum_bone_length_factor,
-     "longest straight bone in MAT radii, cut at its narrowings (0: no limit)"},
-    {"--min-bone-length-of-piece", "F", ranges::minimum_bone_length_of_piece_factor,
-     "level of detail: every bone is longer than F largest MAT radii of its piece"},
-    {"--tip-setback", "F", ranges::tip_joint_setback,
-     "a tip's joint sits F lengths of its bone back from the tip, where artists end a chain"},
-    {"--joint-spacing", "F", ranges::joint_spacing_factor,
-     "bones are cut into lengths of about F times the mesh's longest extent (0: not cut)"},
-    {"--smallest-radius", "R", ranges::smallest_radius,
-     "the split counts radii under R (world units) as R: thin parts get few joints",
-     "the longest principal extent / 128"},
-    {"--reeb-intervals", "N", ranges::number_of_reeb_intervals, "intervals of the Reeb graph reported for comparison"},
-    {"--max-bones", "K", ranges::max_bones_per_vertex, "skinning: bones that may influence one vertex"},
-    {"--sharpness", "Q", ranges::sharpness,
-     "skinning: exponent of the diffused weights (larger: sharper transitions at the joints)"},
-    {"--min-weight", "W", ranges::minimum_weight, "skinning: weights under W of a vertex's total are dropped"},
-    {"--influence-ratio", "S", ranges::influence_ratio,
-     "skinning: bones up to S times as far as the nearest (through the solid) may heat a vertex"},
-};
+// The numeric options: skeletonize_settings.h's table.
+using skeletonize_settings::Numeric_setting;
 
-const Numeric_option& numeric_option(const std::string& option)
+const Numeric_setting& numeric_option(const std::string& option)
 {
-  for(const Numeric_option& o : numeric_options)
-    if(option == o.option)
-      return o;
+  if(const Numeric_setting* o = skeletonize_settings::setting_of_option(option))
+    return *o;
   throw std::logic_error("no numeric option " + option);
 }
 
@@ -189,7 +120,7 @@ std::string usage_text()
 {
   std::ostringstream text;
   text << usage_head;
-  for(const Numeric_option& o : numeric_options)
+  for(const Numeric_setting& o : skeletonize_settings::numeric_settings)
   {
     // An option too long for its column gets its words on the next line.
     const std::string name = std::string(o.option) + " " + o.metavar;
@@ -209,10 +140,9 @@ std::string usage_text()
 
 // The value of a numeric option, checked against the library's range of its parameter, so
 // that a bad value fails before the mesh is read, naming the option and its range.
-template <typename T>
-T parse_number(const std::string& option, const std::string& text)
+double parse_number(const std::string& option, const std::string& text)
 {
-  const Numeric_option& o = numeric_option(option);
+  const Numeric_setting& o = numeric_option(option);
   std::istringstream in(text);
   double value;
   if(!(in >> value) || !in.eof())
@@ -226,7 +156,7 @@ T parse_number(const std::string& option, const std::string& text)
   if(!o.range.contains(value))
     throw Usage_error("option " + option + " (" + o.range.name + ") must be " + o.range.valid_values() +
                       ", got " + text);
-  return static_cast<T>(value);
+  return value;
 }
 
 int parse_thread_count(const std::string& text)
@@ -258,35 +188,15 @@ Options parse_options(int argc, char** argv)
     else if(a == "-o" || a == "--output") o.output = value();
     else if(a == "--svg") o.svg = value();
     else if(a == "--svg-stage") o.svg_stage = value();
-    else if(a == "--resolution") o.resolution = parse_number<int>(a, value());
     else if(a == "--reeb") o.reeb_graph = true;
     else if(a == "--batch") o.batch = value();
     else if(a == "--threads") o.threads = parse_thread_count(value());
     else if(a == "--no-fill-holes") o.fill_holes = false;
     else if(a == "--peel-surface-voxels") o.keep_surface_voxels = false;
-    else if(a == "--small-pieces") o.small_piece_fraction = parse_number<double>(a, value());
-    else if(a == "--thin-part-radius") o.thin_part_radius = parse_number<double>(a, value());
-    else if(a == "--spur-length") o.spur_length_factor = parse_number<double>(a, value());
-    else if(a == "--limb-protrusion") o.limb_protrusion_factor = parse_number<double>(a, value());
-    else if(a == "--sheet-lobe-reach") o.sheet_lobe_reach_factor = parse_number<double>(a, value());
-    else if(a == "--level-of-detail-resolution") o.level_of_detail_resolution = parse_number<int>(a, value());
-    else if(a == "--smoothing-window") o.smoothing_window = parse_number<int>(a, value());
-    else if(a == "--bend-threshold") o.bend_threshold = parse_number<double>(a, value());
-    else if(a == "--straightness") o.straightness_tolerance = parse_number<double>(a, value());
-    else if(a == "--min-bone-length") o.minimum_bone_length_factor = parse_number<double>(a, value());
-    else if(a == "--max-bone-length") o.maximum_bone_length_factor = parse_number<double>(a, value());
-    else if(a == "--min-bone-length-of-piece")
-      o.minimum_bone_length_of_piece_factor = parse_number<double>(a, value());
-    else if(a == "--tip-setback") o.tip_joint_setback = parse_number<double>(a, value());
-    else if(a == "--joint-spacing") o.joint_spacing_factor = parse_number<double>(a, value());
-    else if(a == "--smallest-radius") o.smallest_radius = parse_number<double>(a, value());
-    else if(a == "--reeb-intervals") o.reeb_intervals = parse_number<std::size_t>(a, value());
     else if(a == "--skeleton") o.skeleton = value();
     else if(a == "--weights") o.weights = true;
-    else if(a == "--max-bones") o.max_bones_per_vertex = parse_number<int>(a, value());
-    else if(a == "--sharpness") o.sharpness = parse_number<double>(a, value());
-    else if(a == "--min-weight") o.minimum_weight = parse_number<double>(a, value());
-    else if(a == "--influence-ratio") o.influence_ratio = parse_number<double>(a, value());
+    else if(const Numeric_setting* setting = skeletonize_settings::setting_of_option(a))
+      setting->set(o, parse_number(a, value()));
     else if(!a.empty() && a[0] == '-')
       throw Usage_error("unknown option " + a + " (see --help)");
     else if(o.input.empty()) o.input = a;
@@ -375,16 +285,10 @@ void compute_skinning(const Options& o, const std::string& input, const gs::Cont
   skinning.segment.assign(num_vertices(mesh), -1);
   try
   {
-    skinning.report = gs::compute_skinning_weights(
-        mesh, control,
+    skinning.report = skeletonize_settings::compute_skinning_weights(
+        mesh, control, o, solid,
         boost::make_iterator_property_map(skinning.weights.begin(), get(CGAL::vertex_index, mesh)),
-        params::combine(params::resolution(o.resolution), params::fill_holes(o.fill_holes),
-                        params::keep_surface_voxels(o.keep_surface_voxels), params::voxelized_solid(solid),
-                        params::max_bones_per_vertex(o.max_bones_per_vertex), params::sharpness(o.sharpness),
-                        params::minimum_weight(o.minimum_weight),
-                        params::influence_ratio(o.influence_ratio),
-                        params::bone_segmentation_map(
-                            boost::make_iterator_property_map(skinning.segment.begin(), get(CGAL::vertex_index, mesh)))));
+        boost::make_iterator_property_map(skinning.segment.begin(), get(CGAL::vertex_index, mesh)));
   }
   catch(const std::exception& e)
   {
@@ -586,29 +490,10 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
   }
   else try
   {
-    const auto np = params::combine(
-        params::resolution(o.resolution), params::fill_holes(o.fill_holes),
-        params::keep_surface_voxels(o.keep_surface_voxels), params::small_piece_fraction(o.small_piece_fraction),
-        params::thin_part_radius(o.thin_part_radius.value_or(gs::default_thin_part_radius(o.resolution))),
-        params::spur_length_factor(o.spur_length_factor),
-        params::limb_protrusion_factor(o.limb_protrusion_factor),
-        params::sheet_lobe_reach_factor(o.sheet_lobe_reach_factor),
-        params::level_of_detail_resolution(o.level_of_detail_resolution),
-        params::smoothing_window(o.smoothing_window.value_or(gs::default_smoothing_window(o.resolution))),
-        params::bend_threshold(o.bend_threshold), params::straightness_tolerance(o.straightness_tolerance),
-        params::minimum_bone_length_factor(o.minimum_bone_length_factor),
-        params::maximum_bone_length_factor(o.maximum_bone_length_factor),
-        params::minimum_bone_length_of_piece_factor(o.minimum_bone_length_of_piece_factor),
-        params::tip_joint_setback(o.tip_joint_setback), params::joint_spacing_factor(o.joint_spacing_factor),
-        params::number_of_reeb_intervals(o.reeb_intervals), params::curve_skeleton_output(&curve),
-        params::thinned_skeleton_output(thinned_graph ? &thinned : nullptr),
-        params::reeb_graph_output(o.reeb_graph ? &reeb : nullptr),
-        params::voxelized_solid_output(skin ? &solid : nullptr));
-    // Without --smallest-radius, the library's default (it depends on the mesh's extent).
-    report = o.smallest_radius
-                 ? gs::extract_control_skeleton(mesh, control,
-                                                params::combine(params::smallest_radius(*o.smallest_radius), np))
-                 : gs::extract_control_skeleton(mesh, control, np);
+    report = skeletonize_settings::extract_control_skeleton(
+        mesh, control, o,
+        skeletonize_settings::Chain_outputs<Mesh, Point>{&curve, thinned_graph ? &thinned : nullptr,
+                                                         o.reeb_graph ? &reeb : nullptr, skin ? &solid : nullptr});
   }
   catch(const std::exception& e) // the stages' messages name the stage and the problem
   {

@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # Installs, with apt-get, the Debian packages that building, testing and documenting the
-# package need, skipping those already installed. Needs root (or sudo).
+# package need (the Python module: python3-dev, pybind11-dev, and numpy, SciPy and pytest
+# for its tests), skipping those already installed. Needs root (or sudo).
 #
 #   bash scripts/install_dependencies.sh [--with-blender]
 set -euo pipefail
 
 packages=(g++ cmake make ninja-build libcgal-dev libcgal-demo libboost-graph-dev libboost-test-dev
-          libeigen3-dev nlohmann-json3-dev doxygen libassimp-dev libtinygltf-dev)
+          libeigen3-dev nlohmann-json3-dev doxygen libassimp-dev libtinygltf-dev
+          python3-dev pybind11-dev python3-numpy python3-scipy python3-pytest)
 # --with-blender (the tests): Blender and the numpy its glTF importer needs, to import and
 # pose the skinned glTF files that skeletonize writes.
 if [ "${1:-}" = "--with-blender" ]; then
