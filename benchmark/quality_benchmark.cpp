@@ -315,6 +315,7 @@ double split_with_radii_on_mesh(Curve curve, const Mesh_surface& surface, double
     if(on_mesh > 0)
       ratios.push_back(curve[v].radius / on_mesh);
     curve[v].radius = on_mesh;
+    curve[v].sheet_half_width = curve[v].piece_radius = 0; // the radii alone
   }
   gs::split_into_bones(curve, control, params::smallest_radius(smallest_radius));
   return ratios.empty() ? 0.0 : median(ratios);

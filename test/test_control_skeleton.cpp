@@ -649,16 +649,18 @@ BOOST_AUTO_TEST_CASE(a_sheet_is_split_in_lengths_of_its_half_width)
     wave.emplace_back(0.1 * i, 0.3 * std::sin(0.1 * i * pi / 2.), 0);
   const Skeleton s = chain_skeleton(wave, 0.1);
   const Control fine = bones_of(s, paper_split);
-  const std::vector<double> wide(num_vertices(s), 1.0), narrow(num_vertices(s), 0.05);
-  const Control in_width =
-      bones_of(s, gs::parameters::combine(paper_split, gs::parameters::sheet_half_width_map(CGAL::make_property_map(wide))));
+  auto with_sheet_half_width = [&](double width) {
+    Skeleton sheet = s;
+    for(std::size_t v = 0; v < num_vertices(sheet); ++v)
+      sheet[v].sheet_half_width = width;
+    return sheet;
+  };
+  const Control in_width = bones_of(with_sheet_half_width(1.0), paper_split);
   BOOST_TEST(num_edges(fine) >= 8u);
   BOOST_TEST(num_edges(in_width) <= 2u);
   for(std::size_t j = 0; j < num_vertices(in_width); ++j)
     BOOST_TEST(in_width[j].radius == 0.1);
-  BOOST_TEST(num_edges(bones_of(s, gs::parameters::combine(
-                                       paper_split, gs::parameters::sheet_half_width_map(CGAL::make_property_map(narrow))))) ==
-             num_edges(fine));
+  BOOST_TEST(num_edges(bones_of(with_sheet_half_width(0.05), paper_split)) == num_edges(fine));
 }
 
 // sheet_half_widths(): a sheet radius of r rounds is r - 2 voxels (the two rounds that any
@@ -677,8 +679,8 @@ BOOST_AUTO_TEST_CASE(sheet_half_widths_discount_the_rounds_of_any_level)
 }
 
 // A wavy chain of radius 0.1, as a bar that pruning kept beside a plate of half width 1:
-// with the piece's radius from the plate (the piece_radius_map, given at one vertex or at
-// all), its bones are as long as the plate's level of detail (half of 1) asks; the joints
+// with the piece's radius from the plate (the vertices' piece_radius, given at one vertex or
+// at all), its bones are as long as the plate's level of detail (half of 1) asks; the joints
 // keep their MAT radius; a piece radius under the radii changes nothing.
 BOOST_AUTO_TEST_CASE(a_piece_radius_sets_the_level_of_detail_of_its_piece)
 {
@@ -686,11 +688,14 @@ BOOST_AUTO_TEST_CASE(a_piece_radius_sets_the_level_of_detail_of_its_piece)
   for(int i = 0; i <= 200; ++i)
     wave.emplace_back(0.1 * i, 0.3 * std::sin(0.1 * i * pi / 2.), 0);
   const Skeleton s = chain_skeleton(wave, 0.1);
-  std::vector<double> at_one_vertex(num_vertices(s), 0.0), everywhere(num_vertices(s), 1.0),
-      narrow(num_vertices(s), 0.05);
-  at_one_vertex[7] = 1.0;
+  auto with_piece_radius = [&](double radius, bool at_one_vertex) {
+    Skeleton piece = s;
+    for(std::size_t v = 0; v < num_vertices(piece); ++v)
+      piece[v].piece_radius = at_one_vertex && v != 7 ? 0.0 : radius;
+    return piece;
+  };
   const Control own = bones_of(s);
-  const Control in_piece = bones_of(s, gs::parameters::piece_radius_map(CGAL::make_property_map(at_one_vertex)));
+  const Control in_piece = bones_of(with_piece_radius(1.0, true));
   check_tree(in_piece);
   BOOST_TEST(num_edges(own) >= 8u);
   BOOST_TEST(num_edges(in_piece) < num_edges(own));
@@ -698,10 +703,9 @@ BOOST_AUTO_TEST_CASE(a_piece_radius_sets_the_level_of_detail_of_its_piece)
   BOOST_TEST(shortest_bone(in_piece) > 0.5);
   for(std::size_t j = 0; j < num_vertices(in_piece); ++j)
     BOOST_TEST(in_piece[j].radius == 0.1);
-  const Control given_everywhere = bones_of(s, gs::parameters::piece_radius_map(CGAL::make_property_map(everywhere)));
+  const Control given_everywhere = bones_of(with_piece_radius(1.0, false));
   BOOST_TEST(num_edges(given_everywhere) == num_edges(in_piece));
-  BOOST_TEST(num_edges(bones_of(s, gs::parameters::piece_radius_map(CGAL::make_property_map(narrow)))) ==
-             num_edges(own));
+  BOOST_TEST(num_edges(bones_of(with_piece_radius(0.05, false))) == num_edges(own));
 }
 
 // widest_sheet_radius_of_pieces(): every voxel of a 26-connected piece gets the largest
@@ -828,12 +832,11 @@ BOOST_AUTO_TEST_CASE(bad_parameters_throw)
     radii[3] = bad;
     BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::mat_radius_map(CGAL::make_property_map(radii))),
                       std::invalid_argument);
-    std::vector<double> widths(num_vertices(s), 0.0);
-    widths[3] = bad;
-    BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::sheet_half_width_map(CGAL::make_property_map(widths))),
-                      std::invalid_argument);
-    BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::piece_radius_map(CGAL::make_property_map(widths))),
-                      std::invalid_argument);
+    Skeleton bad_sheet = s, bad_piece = s;
+    bad_sheet[3].sheet_half_width = bad;
+    bad_piece[3].piece_radius = bad;
+    BOOST_CHECK_THROW(gs::split_into_bones(bad_sheet, c), std::invalid_argument);
+    BOOST_CHECK_THROW(gs::split_into_bones(bad_piece, c), std::invalid_argument);
   }
   Skeleton empty;
   gs::split_into_bones(empty, c);

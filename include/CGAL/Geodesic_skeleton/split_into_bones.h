@@ -68,10 +68,10 @@ inline double default_joint_spacing(double voxel_size, int resolution,
 /// it strays from its chord by more than `straightness_tolerance` MAT radii (each radius
 /// taken as at least the radius of the rig's level of detail below), leaving only
 /// bones longer than `minimum_bone_length_factor` MAT radii (each radius taken as at least
-/// `smallest_radius`, and as at least the sheet's half width where a `sheet_half_width_map`
-/// gives one) and longer than `minimum_bone_length_of_piece_factor` times the largest MAT
-/// radius of its connected component (the rig's level of detail; at least what a
-/// `piece_radius_map` gives the component), clearly longer: a part
+/// `smallest_radius`, and as at least the vertex's `sheet_half_width` where the vertex
+/// bundle has one) and longer than `minimum_bone_length_of_piece_factor` times the largest MAT
+/// radius of its connected component (the rig's level of detail; at least the largest
+/// `piece_radius` of the component's vertices), clearly longer: a part
 /// exactly twice that length stays whole, whatever the rounding; a straight bone longer than
 /// `maximum_bone_length_factor` times the largest MAT radius of its connected component
 /// (the body's thickness; a straight limb has no bend to cut at) is cut
@@ -96,7 +96,16 @@ inline double default_joint_spacing(double voxel_size, int resolution,
 ///         or `CGAL::Mean_curvature_flow_skeletonization<TriangleMesh>::Skeleton`, usually
 ///         after `smooth_skeleton()`. Its vertex bundle has a `point` member (a CGAL point)
 ///         unless a `vertex_point_map` is given, and a `radius` member (`double`, world
-///         units) unless a `mat_radius_map` is given.
+///         units) unless a `mat_radius_map` is given. When it also has the members
+///         `sheet_half_width` and `piece_radius` (`double`, world units, each finite and at
+///         least 0), as `Curve_skeleton_vertex` has, the split reads them: where a vertex's
+///         sheet half width is larger than its radius, the lengths of the split (chords,
+///         straightness, shortest and longest bone) are measured in it (a sheet's chain gets
+///         the joints of a limb as wide, not as thin; the joints keep their own radius), and
+///         the largest MAT radius of a connected component (R: the rig's level of detail,
+///         the longest straight bone, the floor of the straightness) is at least the largest
+///         piece radius of its vertices (a chain that pruning kept beside a sheet, a bar
+///         beside a plate, gets the sheet's level of detail).
 /// \tparam Point the point type of the output.
 /// \param skeleton the curve skeleton.
 /// \param control receives the control skeleton (cleared first), a forest whose vertices
@@ -180,35 +189,6 @@ inline double default_joint_spacing(double voxel_size, int resolution,
 ///     \cgalParamDefault{0 (the MAT radius as it is); `extract_control_skeleton()` passes
 ///                       half a voxel of the default grid}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{sheet_half_width_map}
-///     \cgalParamDescription{at each skeleton vertex that runs through a thin sheet (a wing,
-///                           a fin, a cape), the sheet's half width, in world units; 0
-///                           elsewhere. Where it is larger than the radius, the lengths of the
-///                           split (chords, straightness, shortest and longest bone) are
-///                           measured in it instead: a sheet's chain gets the joints of a limb
-///                           as wide, not as thin; the joints keep their own radius. Each
-///                           value finite and at least 0 (package parameter)}
-///     \cgalParamType{a model of `ReadablePropertyMap` with the skeleton's vertex descriptor
-///                    as key type and `double` as value type}
-///     \cgalParamDefault{none (0 everywhere); `extract_control_skeleton()` passes
-///                       `sheet_half_widths()` of its thinning's sheet radii}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{piece_radius_map}
-///     \cgalParamDescription{a radius per skeleton vertex, in world units, that the largest
-///                           MAT radius of the vertex's connected component (R, which sets the
-///                           rig's level of detail, the longest straight bone and the floor of
-///                           the straightness) is taken as at least: R is the largest of the
-///                           component's radii (as the split measures them) and of this map's
-///                           values over the component. Pruning judges a piece's twigs by the
-///                           widest sheet of the whole piece; a chain that it keeps beside the
-///                           sheet (a bar beside a plate) gets the same level of detail through
-///                           this map. Each value finite and at least 0 (package parameter)}
-///     \cgalParamType{a model of `ReadablePropertyMap` with the skeleton's vertex descriptor
-///                    as key type and `double` as value type}
-///     \cgalParamDefault{none (R from the radii alone); `extract_control_skeleton()` passes
-///                       the half width of the widest sheet of each piece before pruning
-///                       (`widest_sheet_radius_of_pieces()`, read by `sheet_half_widths()`)}
-///   \cgalParamNEnd
 ///   \cgalParamNBegin{chord_length_factors}
 ///     \cgalParamDescription{the chord lengths of the accumulation, in MAT radii, each in
 ///                           [0.001, 1000] (package parameter)}
@@ -238,8 +218,8 @@ inline double default_joint_spacing(double voxel_size, int resolution,
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// \throws std::invalid_argument when a parameter is out of range, or the radius map, the
-///         sheet half width map or the piece radius map gives a negative or non-finite value.
+/// \throws std::invalid_argument when a parameter is out of range, or the radius map, a
+///         vertex's `sheet_half_width` or its `piece_radius` is negative or not finite.
 ///
 /// \b Complexity: O(N log N * c) for N skeleton vertices and c chords per point in
 /// practice (each recursion level scans its part), plus O(J B log B) to root the J joints
@@ -258,7 +238,7 @@ void split_into_bones(const CurveSkeleton& skeleton, Control_skeleton<Point>& co
   if constexpr(internal::has_radius_map<CurveSkeleton, NamedParameters>())
     internal::split_into_bones_with_maps(skeleton, internal::skeleton_point_map(skeleton, np),
                                          internal::skeleton_radius_map(skeleton, np),
-                                         internal::split_length_maps(skeleton, np), settings, control);
+                                         internal::split_length_maps(skeleton), settings, control);
 }
 
 } // namespace Geodesic_skeleton

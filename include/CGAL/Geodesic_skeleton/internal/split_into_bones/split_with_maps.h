@@ -104,32 +104,28 @@ std::vector<double> checked_lengths(const LengthMap& map, std::size_t n, const c
   return lengths;
 }
 
-// The optional per-vertex length map `Tag` of `np` read at each vertex of `skeleton`
-// (vertices numbered 0 to n-1); empty without one. Throws, with `error` as the message,
-// when a length is negative or not finite.
-template <typename Tag, typename CurveSkeleton, typename NamedParameters>
-std::vector<double> optional_lengths_of(const CurveSkeleton& skeleton, const NamedParameters& np, const char* error)
-{
-  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, Tag>::value)
-    return {};
-  else
-    return checked_lengths(CGAL::parameters::get_parameter(np, Tag{}), num_vertices(skeleton), error);
-}
-
-// Per-vertex lengths that a split reads besides the MAT radii; each empty when not given.
+// Per-vertex lengths that a split reads besides the MAT radii; each empty when the vertex
+// bundle has none.
 struct Split_length_maps
 {
-  std::vector<double> sheet_half_widths; // `sheet_half_width_map`
-  std::vector<double> piece_radii;       // `piece_radius_map`
+  std::vector<double> sheet_half_widths; // the vertices' `sheet_half_width`
+  std::vector<double> piece_radii;       // the vertices' `piece_radius`
 };
 
-template <typename CurveSkeleton, typename NamedParameters>
-Split_length_maps split_length_maps(const CurveSkeleton& skeleton, const NamedParameters& np)
+// The `sheet_half_width` and `piece_radius` members of the vertices of `skeleton` (vertices
+// numbered 0 to n-1), empty when its vertex bundle has none; throws when one is negative or
+// not finite.
+template <typename CurveSkeleton>
+Split_length_maps split_length_maps(const CurveSkeleton& skeleton)
 {
-  return {optional_lengths_of<internal_np::sheet_half_width_map_t>(
-              skeleton, np, "split_into_bones: the sheet_half_width_map gives a negative or non-finite width"),
-          optional_lengths_of<internal_np::piece_radius_map_t>(
-              skeleton, np, "split_into_bones: the piece_radius_map gives a negative or non-finite radius")};
+  using Bundle = vertex_bundle_t<CurveSkeleton>;
+  if constexpr(has_sheet_members<Bundle>::value)
+    return {checked_lengths(get(&Bundle::sheet_half_width, skeleton), num_vertices(skeleton),
+                            "split_into_bones: a vertex's sheet_half_width is negative or not finite"),
+            checked_lengths(get(&Bundle::piece_radius, skeleton), num_vertices(skeleton),
+                            "split_into_bones: a vertex's piece_radius is negative or not finite")};
+  else
+    return {};
 }
 
 // Algorithm 2 on a skeleton read through its point and radius maps: the body of
@@ -186,8 +182,8 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
       add_joint(v, d >= 3 ? Joint_kind::junction : Joint_kind::end);
   }
 
-  // The level of detail of a piece: its largest length unit, or the radius that the
-  // `piece_radius_map` gives the piece (the widest sheet before pruning) where larger.
+  // The level of detail of a piece: its largest length unit, or the vertices' `piece_radius`
+  // over the piece (the widest sheet before pruning) where larger.
   std::vector<double> piece_scale_of = length_unit_of;
   if(!lengths.piece_radii.empty())
     for(std::size_t v = 0; v < n; ++v)
