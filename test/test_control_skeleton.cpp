@@ -382,7 +382,7 @@ BOOST_AUTO_TEST_CASE(a_long_straight_limb_is_cut_at_its_narrowings)
 {
   // 45 long, radius 5: 45 / (3 x 5) gives 3 bones, cut near z = 15 and z = 30.
   const std::vector<Point> limb = polyline({Point(0, 0, 0), Point(0, 0, 45)}, 0.5);
-  const Control even = bones_of(chain_skeleton(limb, 5.0));
+  const Control even = bones_of(chain_skeleton(limb, 5.0), gs::parameters::tip_joint_setback(0.0)); // joints at the tips
   BOOST_TEST(num_edges(even) == 3u);
   check_tree(even);
   for(const auto bone : boost::make_iterator_range(edges(even)))
@@ -470,7 +470,8 @@ BOOST_AUTO_TEST_CASE(a_part_twice_the_shortest_bone_long_stays_whole)
   BOOST_TEST(num_edges(bones_of(chain_skeleton(polyline({origin, origin + along}, 0.25), 1.0))) == 1u);
   BOOST_TEST(num_edges(bones_of(chain_skeleton(polyline({origin, origin + along * 1.125}, 0.25), 1.0))) == 2u);
 
-  const Control longer = bones_of(chain_skeleton(polyline({Point(0, 0, 0), Point(0, 0, 4.5)}, 0.25), 1.0));
+  const Control longer =
+      bones_of(chain_skeleton(polyline({Point(0, 0, 0), Point(0, 0, 4.5)}, 0.25), 1.0), gs::parameters::tip_joint_setback(0.0)); // joints at the tips
   BOOST_REQUIRE(num_edges(longer) == 2u);
   for(const auto bone : boost::make_iterator_range(edges(longer)))
     BOOST_TEST(longer[bone].length == 2.25, boost::test_tools::tolerance(1e-9));
@@ -740,8 +741,14 @@ BOOST_AUTO_TEST_CASE(a_tip_joint_is_set_back_along_its_bone)
   const auto trunk = add_chain(t, polyline({Point(-20, 0, 0), Point(20, 0, 0)}, 0.5), 1.0);
   add_chain(t, polyline({Point(0, 0, 0.5), Point(0, 0, 20)}, 0.5), 1.0, long(trunk[40]));
   const auto options = gs::parameters::combine(paper_split, gs::parameters::minimum_bone_length_factor(0.0));
-  const Control at_tips = bones_of(t, options);
+  const Control at_tips = bones_of(t, gs::parameters::combine(gs::parameters::tip_joint_setback(0.0), options));
   const Control set_back = bones_of(t, gs::parameters::combine(gs::parameters::tip_joint_setback(0.25), options));
+  // By default a tip's joint is set back as extract_control_skeleton() sets it back.
+  const Control by_default = bones_of(t, options);
+  BOOST_TEST(identical(by_default, bones_of(t, gs::parameters::combine(gs::parameters::tip_joint_setback(
+                                                                           gs::parameter_ranges::tip_joint_setback.default_value),
+                                                                       options))));
+  BOOST_TEST(!identical(by_default, at_tips));
   check_tree(set_back);
   BOOST_TEST(num_vertices(set_back) == num_vertices(at_tips));
   BOOST_TEST(num_edges(set_back) == num_edges(at_tips));
@@ -791,10 +798,11 @@ BOOST_AUTO_TEST_CASE(bones_are_cut_at_the_joint_spacing)
 {
   const Skeleton s = chain_skeleton(polyline({Point(0, 0, 0), Point(0, 0, 30)}, 0.5), 1.0);
   const auto options = gs::parameters::combine(paper_split, gs::parameters::minimum_bone_length_factor(0.0));
-  BOOST_TEST(num_edges(bones_of(s, options)) == 1u);
+  const auto at_tips = gs::parameters::combine(gs::parameters::tip_joint_setback(0.0), options);
+  BOOST_TEST(num_edges(bones_of(s, at_tips)) == 1u);
   for(const auto& [spacing, bones] : std::vector<std::pair<double, std::size_t>>{{10, 3}, {7, 4}, {8.4, 4}, {40, 1}, {0, 1}})
   {
-    const Control c = bones_of(s, gs::parameters::combine(gs::parameters::joint_spacing(spacing), options));
+    const Control c = bones_of(s, gs::parameters::combine(gs::parameters::joint_spacing(spacing), at_tips));
     check_tree(c);
     BOOST_TEST(num_edges(c) == bones);
     for(const auto bone : boost::make_iterator_range(edges(c)))
@@ -988,7 +996,7 @@ BOOST_AUTO_TEST_CASE(an_mcf_skeleton_smooths_and_splits_with_a_user_radius_map)
 
   gs::smooth_skeleton(s, gs::parameters::mat_radius_map(radius_map));
   Control c;
-  gs::split_into_bones(s, c, gs::parameters::mat_radius_map(radius_map));
+  gs::split_into_bones(s, c, gs::parameters::combine(gs::parameters::mat_radius_map(radius_map), gs::parameters::tip_joint_setback(0.0)));
   check_tree(c);
   BOOST_TEST(c[boost::graph_bundle].roots.size() == 1u); // the cow is one piece
   BOOST_TEST((radii != radii_before)); // smoothing wrote the interior radii through the map
@@ -1145,8 +1153,8 @@ BOOST_AUTO_TEST_CASE(default_maps_given_explicitly_change_nothing_and_doubled_ra
     doubled[v] = 2 * curve[v].radius;
   // (Joints at the tips: a set-back tip moves with its bone, whose length the radii change.)
   Control twice, at_tips;
-  gs::split_into_bones(curve, twice, gs::parameters::mat_radius_map(CGAL::make_property_map(doubled)));
-  gs::split_into_bones(curve, at_tips);
+  gs::split_into_bones(curve, twice, gs::parameters::combine(gs::parameters::mat_radius_map(CGAL::make_property_map(doubled)), gs::parameters::tip_joint_setback(0.0)));
+  gs::split_into_bones(curve, at_tips, gs::parameters::tip_joint_setback(0.0));
   check_tree(twice);
   BOOST_TEST(!identical(twice, at_tips));
   std::map<std::size_t, double> node_radius;

@@ -79,8 +79,9 @@ inline double default_joint_spacing(double voxel_size, int resolution,
 /// equal-length position (an elbow, a knee, a wrist); each component is rooted at
 /// its most central junction; when the shape has handles, the bones left off the trees (one
 /// per independent cycle) are in the graph bundle's `Control_skeleton_property::cut_bones`.
-/// Where asked (`tip_joint_setback`, `joint_spacing`), the joints of the tips move back along
-/// their bones and long bones are cut at a spacing, as artists place joints.
+/// As artists place joints, the joints of the tips move back along their bones
+/// (`tip_joint_setback`; 0 keeps them at the tips) and, where asked (`joint_spacing`), long
+/// bones are cut at a spacing.
 /// The steps are described in the manual, section
 /// \ref manual_split_into_bones.
 ///
@@ -203,7 +204,7 @@ inline double default_joint_spacing(double voxel_size, int resolution,
 ///                           branch, in [0, 0.45]; the vertices beyond it are in no bone. A lone
 ///                           bone with two tips is set back from both (package parameter)}
 ///     \cgalParamType{`double`}
-///     \cgalParamDefault{0 (joints at the tips); `extract_control_skeleton()` passes 0.3}
+///     \cgalParamDefault{0.3, as `extract_control_skeleton()` uses it (0: joints at the tips)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{joint_spacing}
 ///     \cgalParamDescription{the length, in world units, that bones are cut into after the

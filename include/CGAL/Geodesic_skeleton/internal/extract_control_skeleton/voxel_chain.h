@@ -204,7 +204,7 @@ void extract_control_skeleton_with(
   }
   // Chains end short of the tips and long bones get joints in between, as artists place them;
   // the spacing is a share of the whole shape, so a character gets as many joints at any size.
-  report.tip_joint_setback = settings.tip_joint_setback;
+  report.tip_joint_setback = settings.split.tip_joint_setback;
   report.joint_spacing = settings.joint_spacing.value_or(
       default_joint_spacing(report.voxel_size, report.resolution, settings.joint_spacing_factor));
   split_into_bones(curve, out,

@@ -54,7 +54,8 @@ Bone_splitting_settings bone_splitting_settings(const NamedParameters& np,
       choose_parameter(get_parameter(np, internal_np::smallest_radius_tag), ranges::smallest_radius.default_value),
       choose_parameter(get_parameter(np, internal_np::minimum_bone_length_of_piece_factor_tag),
                        ranges::minimum_bone_length_of_piece_factor.default_value),
-      choose_parameter(get_parameter(np, internal_np::tip_joint_setback_tag), 0.0),
+      choose_parameter(get_parameter(np, internal_np::tip_joint_setback_tag),
+                       ranges::tip_joint_setback.default_value),
       choose_parameter(get_parameter(np, internal_np::joint_spacing_tag), ranges::joint_spacing.default_value)};
   checked_parameter(ranges::bend_threshold, s.bend_threshold, caller);
   checked_parameter(ranges::straightness_tolerance, s.straightness_tolerance, caller);
