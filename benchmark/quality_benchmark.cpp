@@ -304,8 +304,9 @@ private:
 };
 
 // Splits `curve` into `control` again with the radius of each curve point measured on the
-// mesh (`--radii-on-mesh`), with the same smallest radius, without the sheet widths; returns
-// the median over the curve points of the voxel radius over the radius measured on the mesh.
+// mesh (`--radii-on-mesh`), with the same smallest radius, without the sheet widths and with
+// the joints at the tips; returns the median over the curve points of the voxel radius over
+// the radius measured on the mesh.
 double split_with_radii_on_mesh(Curve curve, const Mesh_surface& surface, double smallest_radius, Control& control)
 {
   std::vector<double> ratios;
@@ -315,8 +316,10 @@ double split_with_radii_on_mesh(Curve curve, const Mesh_surface& surface, double
     if(on_mesh > 0)
       ratios.push_back(curve[v].radius / on_mesh);
     curve[v].radius = on_mesh;
+    curve[v].sheet_half_width = curve[v].piece_radius = 0; // the radii alone
   }
-  gs::split_into_bones(curve, control, params::smallest_radius(smallest_radius));
+  gs::split_into_bones(curve, control,
+                       params::combine(params::smallest_radius(smallest_radius), params::tip_joint_setback(0.0)));
   return ratios.empty() ? 0.0 : median(ratios);
 }
 

@@ -8,6 +8,7 @@
 // standard output when there is no -o), .obj, .bvh, .polylines.txt, and .glb or .gltf (the
 // mesh skinned to its skeleton). See --help.
 
+#include "skeletonize/svg_preview.h"
 #include "skeletonize_formats.h"
 #include "skeletonize_settings.h"
 

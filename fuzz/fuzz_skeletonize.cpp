@@ -22,6 +22,8 @@
 #include <CGAL/Geodesic_skeleton/IO/json.h>
 #include <CGAL/Geodesic_skeleton/IO/read_mesh.h>
 
+#include "../examples/skeletonize/svg_preview.h" // the picture skeletonize --svg draws
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 

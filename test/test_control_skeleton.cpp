@@ -382,7 +382,7 @@ BOOST_AUTO_TEST_CASE(a_long_straight_limb_is_cut_at_its_narrowings)
 {
   // 45 long, radius 5: 45 / (3 x 5) gives 3 bones, cut near z = 15 and z = 30.
   const std::vector<Point> limb = polyline({Point(0, 0, 0), Point(0, 0, 45)}, 0.5);
-  const Control even = bones_of(chain_skeleton(limb, 5.0));
+  const Control even = bones_of(chain_skeleton(limb, 5.0), gs::parameters::tip_joint_setback(0.0)); // joints at the tips
   BOOST_TEST(num_edges(even) == 3u);
   check_tree(even);
   for(const auto bone : boost::make_iterator_range(edges(even)))
@@ -470,7 +470,8 @@ BOOST_AUTO_TEST_CASE(a_part_twice_the_shortest_bone_long_stays_whole)
   BOOST_TEST(num_edges(bones_of(chain_skeleton(polyline({origin, origin + along}, 0.25), 1.0))) == 1u);
   BOOST_TEST(num_edges(bones_of(chain_skeleton(polyline({origin, origin + along * 1.125}, 0.25), 1.0))) == 2u);
 
-  const Control longer = bones_of(chain_skeleton(polyline({Point(0, 0, 0), Point(0, 0, 4.5)}, 0.25), 1.0));
+  const Control longer =
+      bones_of(chain_skeleton(polyline({Point(0, 0, 0), Point(0, 0, 4.5)}, 0.25), 1.0), gs::parameters::tip_joint_setback(0.0)); // joints at the tips
   BOOST_REQUIRE(num_edges(longer) == 2u);
   for(const auto bone : boost::make_iterator_range(edges(longer)))
     BOOST_TEST(longer[bone].length == 2.25, boost::test_tools::tolerance(1e-9));
@@ -649,16 +650,18 @@ BOOST_AUTO_TEST_CASE(a_sheet_is_split_in_lengths_of_its_half_width)
     wave.emplace_back(0.1 * i, 0.3 * std::sin(0.1 * i * pi / 2.), 0);
   const Skeleton s = chain_skeleton(wave, 0.1);
   const Control fine = bones_of(s, paper_split);
-  const std::vector<double> wide(num_vertices(s), 1.0), narrow(num_vertices(s), 0.05);
-  const Control in_width =
-      bones_of(s, gs::parameters::combine(paper_split, gs::parameters::sheet_half_width_map(CGAL::make_property_map(wide))));
+  auto with_sheet_half_width = [&](double width) {
+    Skeleton sheet = s;
+    for(std::size_t v = 0; v < num_vertices(sheet); ++v)
+      sheet[v].sheet_half_width = width;
+    return sheet;
+  };
+  const Control in_width = bones_of(with_sheet_half_width(1.0), paper_split);
   BOOST_TEST(num_edges(fine) >= 8u);
   BOOST_TEST(num_edges(in_width) <= 2u);
   for(std::size_t j = 0; j < num_vertices(in_width); ++j)
     BOOST_TEST(in_width[j].radius == 0.1);
-  BOOST_TEST(num_edges(bones_of(s, gs::parameters::combine(
-                                       paper_split, gs::parameters::sheet_half_width_map(CGAL::make_property_map(narrow))))) ==
-             num_edges(fine));
+  BOOST_TEST(num_edges(bones_of(with_sheet_half_width(0.05), paper_split)) == num_edges(fine));
 }
 
 // sheet_half_widths(): a sheet radius of r rounds is r - 2 voxels (the two rounds that any
@@ -677,8 +680,8 @@ BOOST_AUTO_TEST_CASE(sheet_half_widths_discount_the_rounds_of_any_level)
 }
 
 // A wavy chain of radius 0.1, as a bar that pruning kept beside a plate of half width 1:
-// with the piece's radius from the plate (the piece_radius_map, given at one vertex or at
-// all), its bones are as long as the plate's level of detail (half of 1) asks; the joints
+// with the piece's radius from the plate (the vertices' piece_radius, given at one vertex or
+// at all), its bones are as long as the plate's level of detail (half of 1) asks; the joints
 // keep their MAT radius; a piece radius under the radii changes nothing.
 BOOST_AUTO_TEST_CASE(a_piece_radius_sets_the_level_of_detail_of_its_piece)
 {
@@ -686,11 +689,14 @@ BOOST_AUTO_TEST_CASE(a_piece_radius_sets_the_level_of_detail_of_its_piece)
   for(int i = 0; i <= 200; ++i)
     wave.emplace_back(0.1 * i, 0.3 * std::sin(0.1 * i * pi / 2.), 0);
   const Skeleton s = chain_skeleton(wave, 0.1);
-  std::vector<double> at_one_vertex(num_vertices(s), 0.0), everywhere(num_vertices(s), 1.0),
-      narrow(num_vertices(s), 0.05);
-  at_one_vertex[7] = 1.0;
+  auto with_piece_radius = [&](double radius, bool at_one_vertex) {
+    Skeleton piece = s;
+    for(std::size_t v = 0; v < num_vertices(piece); ++v)
+      piece[v].piece_radius = at_one_vertex && v != 7 ? 0.0 : radius;
+    return piece;
+  };
   const Control own = bones_of(s);
-  const Control in_piece = bones_of(s, gs::parameters::piece_radius_map(CGAL::make_property_map(at_one_vertex)));
+  const Control in_piece = bones_of(with_piece_radius(1.0, true));
   check_tree(in_piece);
   BOOST_TEST(num_edges(own) >= 8u);
   BOOST_TEST(num_edges(in_piece) < num_edges(own));
@@ -698,10 +704,9 @@ BOOST_AUTO_TEST_CASE(a_piece_radius_sets_the_level_of_detail_of_its_piece)
   BOOST_TEST(shortest_bone(in_piece) > 0.5);
   for(std::size_t j = 0; j < num_vertices(in_piece); ++j)
     BOOST_TEST(in_piece[j].radius == 0.1);
-  const Control given_everywhere = bones_of(s, gs::parameters::piece_radius_map(CGAL::make_property_map(everywhere)));
+  const Control given_everywhere = bones_of(with_piece_radius(1.0, false));
   BOOST_TEST(num_edges(given_everywhere) == num_edges(in_piece));
-  BOOST_TEST(num_edges(bones_of(s, gs::parameters::piece_radius_map(CGAL::make_property_map(narrow)))) ==
-             num_edges(own));
+  BOOST_TEST(num_edges(bones_of(with_piece_radius(0.05, false))) == num_edges(own));
 }
 
 // widest_sheet_radius_of_pieces(): every voxel of a 26-connected piece gets the largest
@@ -736,8 +741,14 @@ BOOST_AUTO_TEST_CASE(a_tip_joint_is_set_back_along_its_bone)
   const auto trunk = add_chain(t, polyline({Point(-20, 0, 0), Point(20, 0, 0)}, 0.5), 1.0);
   add_chain(t, polyline({Point(0, 0, 0.5), Point(0, 0, 20)}, 0.5), 1.0, long(trunk[40]));
   const auto options = gs::parameters::combine(paper_split, gs::parameters::minimum_bone_length_factor(0.0));
-  const Control at_tips = bones_of(t, options);
+  const Control at_tips = bones_of(t, gs::parameters::combine(gs::parameters::tip_joint_setback(0.0), options));
   const Control set_back = bones_of(t, gs::parameters::combine(gs::parameters::tip_joint_setback(0.25), options));
+  // By default a tip's joint is set back as extract_control_skeleton() sets it back.
+  const Control by_default = bones_of(t, options);
+  BOOST_TEST(identical(by_default, bones_of(t, gs::parameters::combine(gs::parameters::tip_joint_setback(
+                                                                           gs::parameter_ranges::tip_joint_setback.default_value),
+                                                                       options))));
+  BOOST_TEST(!identical(by_default, at_tips));
   check_tree(set_back);
   BOOST_TEST(num_vertices(set_back) == num_vertices(at_tips));
   BOOST_TEST(num_edges(set_back) == num_edges(at_tips));
@@ -787,10 +798,11 @@ BOOST_AUTO_TEST_CASE(bones_are_cut_at_the_joint_spacing)
 {
   const Skeleton s = chain_skeleton(polyline({Point(0, 0, 0), Point(0, 0, 30)}, 0.5), 1.0);
   const auto options = gs::parameters::combine(paper_split, gs::parameters::minimum_bone_length_factor(0.0));
-  BOOST_TEST(num_edges(bones_of(s, options)) == 1u);
+  const auto at_tips = gs::parameters::combine(gs::parameters::tip_joint_setback(0.0), options);
+  BOOST_TEST(num_edges(bones_of(s, at_tips)) == 1u);
   for(const auto& [spacing, bones] : std::vector<std::pair<double, std::size_t>>{{10, 3}, {7, 4}, {8.4, 4}, {40, 1}, {0, 1}})
   {
-    const Control c = bones_of(s, gs::parameters::combine(gs::parameters::joint_spacing(spacing), options));
+    const Control c = bones_of(s, gs::parameters::combine(gs::parameters::joint_spacing(spacing), at_tips));
     check_tree(c);
     BOOST_TEST(num_edges(c) == bones);
     for(const auto bone : boost::make_iterator_range(edges(c)))
@@ -828,12 +840,11 @@ BOOST_AUTO_TEST_CASE(bad_parameters_throw)
     radii[3] = bad;
     BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::mat_radius_map(CGAL::make_property_map(radii))),
                       std::invalid_argument);
-    std::vector<double> widths(num_vertices(s), 0.0);
-    widths[3] = bad;
-    BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::sheet_half_width_map(CGAL::make_property_map(widths))),
-                      std::invalid_argument);
-    BOOST_CHECK_THROW(gs::split_into_bones(s, c, gs::parameters::piece_radius_map(CGAL::make_property_map(widths))),
-                      std::invalid_argument);
+    Skeleton bad_sheet = s, bad_piece = s;
+    bad_sheet[3].sheet_half_width = bad;
+    bad_piece[3].piece_radius = bad;
+    BOOST_CHECK_THROW(gs::split_into_bones(bad_sheet, c), std::invalid_argument);
+    BOOST_CHECK_THROW(gs::split_into_bones(bad_piece, c), std::invalid_argument);
   }
   Skeleton empty;
   gs::split_into_bones(empty, c);
@@ -985,7 +996,7 @@ BOOST_AUTO_TEST_CASE(an_mcf_skeleton_smooths_and_splits_with_a_user_radius_map)
 
   gs::smooth_skeleton(s, gs::parameters::mat_radius_map(radius_map));
   Control c;
-  gs::split_into_bones(s, c, gs::parameters::mat_radius_map(radius_map));
+  gs::split_into_bones(s, c, gs::parameters::combine(gs::parameters::mat_radius_map(radius_map), gs::parameters::tip_joint_setback(0.0)));
   check_tree(c);
   BOOST_TEST(c[boost::graph_bundle].roots.size() == 1u); // the cow is one piece
   BOOST_TEST((radii != radii_before)); // smoothing wrote the interior radii through the map
@@ -1142,8 +1153,8 @@ BOOST_AUTO_TEST_CASE(default_maps_given_explicitly_change_nothing_and_doubled_ra
     doubled[v] = 2 * curve[v].radius;
   // (Joints at the tips: a set-back tip moves with its bone, whose length the radii change.)
   Control twice, at_tips;
-  gs::split_into_bones(curve, twice, gs::parameters::mat_radius_map(CGAL::make_property_map(doubled)));
-  gs::split_into_bones(curve, at_tips);
+  gs::split_into_bones(curve, twice, gs::parameters::combine(gs::parameters::mat_radius_map(CGAL::make_property_map(doubled)), gs::parameters::tip_joint_setback(0.0)));
+  gs::split_into_bones(curve, at_tips, gs::parameters::tip_joint_setback(0.0));
   check_tree(twice);
   BOOST_TEST(!identical(twice, at_tips));
   std::map<std::size_t, double> node_radius;

@@ -724,8 +724,10 @@ BOOST_AUTO_TEST_CASE(a_null_output_pointer_asks_for_nothing)
 
 // boeing.off is plates without thickness beside bars. At 128 the pruning keeps a chain
 // through a bar beside the plates, having judged the piece's twigs by the plates' width;
-// extract_control_skeleton() splits it at that level of detail, in fewer bones than its
-// own curve skeleton gets from a split that knows only the radii along the chain.
+// extract_control_skeleton() splits it at that level of detail (the curve skeleton it hands
+// back carries the sheet's widths in its vertices' sheet_half_width and piece_radius), in
+// fewer bones than its own curve skeleton gets from a split that knows only the radii along
+// the chain.
 BOOST_AUTO_TEST_CASE(a_chain_kept_beside_a_sheet_is_split_at_the_level_of_detail_of_the_sheet)
 {
   const Mesh mesh = test::demo_mesh<Mesh>("boeing.off");
@@ -733,6 +735,13 @@ BOOST_AUTO_TEST_CASE(a_chain_kept_beside_a_sheet_is_split_at_the_level_of_detail
   Curve curve;
   const gs::Control_skeleton_report r = gs::extract_control_skeleton(
       mesh, control, gs::parameters::combine(gs::parameters::resolution(128), gs::parameters::curve_skeleton_output(&curve)));
+  double widest_piece = 0;
+  for(std::size_t v = 0; v < num_vertices(curve); ++v)
+  {
+    widest_piece = (std::max)(widest_piece, curve[v].piece_radius);
+    curve[v].sheet_half_width = curve[v].piece_radius = 0; // the radii along the chain alone
+  }
+  BOOST_TEST(widest_piece > 0);
   Control along_the_chain;
   gs::split_into_bones(curve, along_the_chain, gs::parameters::smallest_radius(r.smallest_radius));
   BOOST_TEST(control[boost::graph_bundle].roots.size() == 1u);
@@ -826,13 +835,16 @@ BOOST_AUTO_TEST_CASE(the_public_stages_composed_by_hand_give_the_same_skeleton)
       const double voxel_size = solid.frame().voxel_size();
       const std::vector<double> sheet_widths = gs::sheet_half_widths(curve, sheet_radii, voxel_size);
       const std::vector<double> piece_widths = gs::sheet_half_widths(curve, widest_sheet, voxel_size);
+      for(std::size_t v = 0; v < num_vertices(curve); ++v)
+      {
+        curve[v].sheet_half_width = sheet_widths[v];
+        curve[v].piece_radius = piece_widths[v];
+      }
       // Chains end short of the tips, and long bones get joints a tenth of the shape apart.
       Control composed;
       gs::split_into_bones(
           curve, composed,
-          gs::parameters::combine(gs::parameters::sheet_half_width_map(CGAL::make_property_map(sheet_widths)),
-                                  gs::parameters::piece_radius_map(CGAL::make_property_map(piece_widths)),
-                                  gs::parameters::tip_joint_setback(0.3),
+          gs::parameters::combine(gs::parameters::tip_joint_setback(0.3),
                                   gs::parameters::joint_spacing(gs::default_joint_spacing(voxel_size, gs::default_voxel_resolution))));
       //! [composed_chain]
 
@@ -910,13 +922,16 @@ BOOST_AUTO_TEST_CASE(the_stages_composed_by_hand_on_a_finer_grid_give_the_same_s
   const double coarse_voxel_size = solid.frame().voxel_size(), voxel_size = fine_solid.frame().voxel_size();
   const std::vector<double> sheet_widths = gs::sheet_half_widths(curve, fine_sheet_radii, coarse_voxel_size);
   const std::vector<double> piece_widths = gs::sheet_half_widths(curve, fine_widest_sheet, coarse_voxel_size);
+  for(std::size_t v = 0; v < num_vertices(curve); ++v)
+  {
+    curve[v].sheet_half_width = sheet_widths[v];
+    curve[v].piece_radius = piece_widths[v];
+  }
   // Parts thinner than half a voxel of the default grid get the joints of parts that thick.
   // Chains end short of the tips, and long bones get joints a tenth of the shape apart.
   Control composed;
   gs::split_into_bones(curve, composed,
                        gs::parameters::combine(gs::parameters::smallest_radius(gs::default_smallest_radius(voxel_size, resolution)),
-                                               gs::parameters::sheet_half_width_map(CGAL::make_property_map(sheet_widths)),
-                                               gs::parameters::piece_radius_map(CGAL::make_property_map(piece_widths)),
                                                gs::parameters::tip_joint_setback(0.3),
                                                gs::parameters::joint_spacing(gs::default_joint_spacing(voxel_size, resolution))));
   //! [composed_chain_on_a_finer_grid]

@@ -64,6 +64,5 @@
 #include <CGAL/Geodesic_skeleton/IO/obj.h>
 #include <CGAL/Geodesic_skeleton/IO/polylines.h>
 #include <CGAL/Geodesic_skeleton/IO/read_mesh.h>
-#include <CGAL/Geodesic_skeleton/IO/svg_preview.h>
 
 #endif // CGAL_GEODESIC_SKELETON_H

@@ -6,7 +6,8 @@
 
 /// \file Curve_skeleton.h
 /// The curve skeleton graph: a Boost.Graph adjacency list whose vertices hold a point, the
-/// medial-axis radius there and the mesh vertices mapped to it.
+/// medial-axis radius there, the mesh vertices mapped to it and the widths of the sheet and
+/// the piece it runs through.
 
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 
@@ -41,6 +42,15 @@ struct Curve_skeleton_vertex
   std::vector<MeshVertex> vertices;
   /// The voxel it comes from (in the frame of the voxel set), when it comes from one.
   Voxel_key voxel;
+  /// The half width of the thin sheet (a wing, a fin, a cape) it runs through, in world
+  /// units, 0 where it runs through none: `split_into_bones()` measures its lengths in the
+  /// larger of `radius` and this (`extract_control_skeleton()` sets it: `sheet_half_widths()`).
+  double sheet_half_width = 0;
+  /// A radius of its connected piece measured otherwise, in world units: `split_into_bones()`
+  /// takes the largest radius of the piece (its level of detail) as at least the largest of
+  /// these over the piece (`extract_control_skeleton()` sets the half width of the piece's
+  /// widest sheet before pruning: `widest_sheet_radius_of_pieces()`).
+  double piece_radius = 0;
 };
 
 /// \ingroup PkgGeodesicSkeletonRef

@@ -57,8 +57,9 @@ std::vector<double> sheet_half_widths_at(const CurveSkeleton& curve, const Sheet
 /// \ingroup PkgGeodesicSkeletonRef
 /// The half width, in world units, of the thin sheet (a wing, a fin, a cape) that each
 /// vertex of a curve skeleton runs through, 0 where it runs through none: the
-/// `sheet_half_width_map` that `extract_control_skeleton()` gives `split_into_bones()`, so
-/// that a sheet's chain is split in lengths of its width rather than of its thickness.
+/// `Curve_skeleton_vertex::sheet_half_width` that `extract_control_skeleton()` sets before
+/// `split_into_bones()`, so that a sheet's chain is split in lengths of its width rather
+/// than of its thickness.
 ///
 /// A vertex's sheet radius r (the rounds in which `thin()` burnt its level around it,
 /// 0 when `sheet_radii` has no entry for its voxel) gives (r - 2) voxels, at least 0: any
@@ -71,7 +72,7 @@ std::vector<double> sheet_half_widths_at(const CurveSkeleton& curve, const Sheet
 /// \param sheet_radii the sheet radii that `thin()` recorded through its `sheet_radius_map`.
 /// \param voxel_size the edge length of a voxel of the grid `thin()` ran on (world units).
 /// \returns one width per vertex, indexed by vertex descriptor (0 to N-1): for example
-///          `CGAL::make_property_map(widths)` is a `sheet_half_width_map`.
+///          `curve[v].sheet_half_width = widths[v]`.
 /// \pre every voxel of `curve` is in the grid whose voxels are `voxel_size` long.
 /// \throws std::invalid_argument when `voxel_size` is not finite and positive.
 ///
@@ -91,8 +92,8 @@ std::vector<double> sheet_half_widths(const CurveSkeleton& curve, const Sheet_ra
 /// Taken before pruning, it keeps the width of the sheets that pruning then thins away: a
 /// chain that pruning keeps beside a sheet (a bar beside a plate, a bone beside a fin) still
 /// belongs to a piece that wide. `extract_control_skeleton()` reads it at the vertices of the
-/// pruned curve skeleton (`sheet_half_widths()`) and gives it `split_into_bones()` as its
-/// `piece_radius_map`, so that the rig's level of detail of a piece is the one that pruning
+/// pruned curve skeleton (`sheet_half_widths()`) and sets it as each vertex's
+/// `Curve_skeleton_vertex::piece_radius` before `split_into_bones()`, so that the rig's level of detail of a piece is the one that pruning
 /// judged its twigs by, whichever path through the sheet pruning kept.
 ///
 /// \tparam VoxelSet a voxel set with `for_each(f)` (f called with each `Voxel_key`) and

@@ -9,239 +9,20 @@
 /// (paper, section III.B.ii and Algorithm 2).
 
 #include <CGAL/Geodesic_skeleton/Control_skeleton.h>
-#include <CGAL/Geodesic_skeleton/internal/split_into_bones/bone_splitting.h>
-#include <CGAL/Geodesic_skeleton/internal/split_into_bones/chain_joints.h>
-#include <CGAL/Geodesic_skeleton/internal/split_into_bones/control_tree.h>
-#include <CGAL/Geodesic_skeleton/internal/skeleton_branches.h>
+#include <CGAL/Geodesic_skeleton/internal/split_into_bones/split_with_maps.h>
 #include <CGAL/Geodesic_skeleton/internal/skeleton_vertex_maps.h>
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
-#include <CGAL/number_utils.h>
-
-#include <boost/graph/connected_components.hpp>
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
-
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
-#include <string>
-#include <vector>
 
 namespace CGAL {
 namespace Geodesic_skeleton {
-namespace internal {
-
-// The settings of split_into_bones(), checked; `caller` names the function in the errors.
-template <typename NamedParameters>
-Bone_splitting_settings bone_splitting_settings(const NamedParameters& np,
-                                                const std::string& caller = "split_into_bones")
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  namespace ranges = parameter_ranges;
-  Bone_splitting_settings s{
-      choose_parameter(get_parameter(np, internal_np::bend_threshold_tag), ranges::bend_threshold.default_value),
-      choose_parameter(get_parameter(np, internal_np::straightness_tolerance_tag),
-                       ranges::straightness_tolerance.default_value),
-      choose_parameter(get_parameter(np, internal_np::minimum_bone_length_factor_tag),
-                       ranges::minimum_bone_length_factor.default_value),
-      choose_parameter(get_parameter(np, internal_np::maximum_bone_length_factor_tag),
-                       ranges::maximum_bone_length_factor.default_value),
-      choose_parameter(get_parameter(np, internal_np::chord_length_factors_tag),
-                       std::vector<double>{ranges::chord_length_factor.default_value,
-                                           2 * ranges::chord_length_factor.default_value}),
-      choose_parameter(get_parameter(np, internal_np::smallest_radius_tag), ranges::smallest_radius.default_value),
-      choose_parameter(get_parameter(np, internal_np::minimum_bone_length_of_piece_factor_tag),
-                       ranges::minimum_bone_length_of_piece_factor.default_value),
-      choose_parameter(get_parameter(np, internal_np::tip_joint_setback_tag), 0.0),
-      choose_parameter(get_parameter(np, internal_np::joint_spacing_tag), ranges::joint_spacing.default_value)};
-  checked_parameter(ranges::bend_threshold, s.bend_threshold, caller);
-  checked_parameter(ranges::straightness_tolerance, s.straightness_tolerance, caller);
-  checked_parameter(ranges::minimum_bone_length_factor, s.minimum_bone_length_factor, caller);
-  checked_parameter(ranges::maximum_bone_length_factor, s.maximum_bone_length_factor, caller);
-  checked_parameter(ranges::smallest_radius, s.smallest_radius, caller);
-  checked_parameter(ranges::minimum_bone_length_of_piece_factor, s.minimum_bone_length_of_piece_factor, caller);
-  checked_parameter(ranges::tip_joint_setback, s.tip_joint_setback, caller);
-  checked_parameter(ranges::joint_spacing, s.joint_spacing, caller);
-  if(s.chord_length_factors.empty())
-    throw std::invalid_argument(caller + ": chord_length_factors must not be empty");
-  for(double f : s.chord_length_factors)
-    checked_parameter(ranges::chord_length_factor, f, caller, "each of chord_length_factors");
-  return s;
-}
-
-// Per vertex of `skeleton` (vertices numbered 0 to n-1): the largest of `radii` over its
-// connected component.
-template <typename CurveSkeleton>
-std::vector<double> largest_radius_of_pieces(const CurveSkeleton& skeleton, const std::vector<double>& radii)
-{
-  const std::size_t n = radii.size();
-  std::vector<std::size_t> piece(n);
-  const std::size_t pieces = n == 0 ? 0 : boost::connected_components(
-      skeleton, boost::make_iterator_property_map(piece.begin(), get(boost::vertex_index, skeleton)));
-  std::vector<double> largest(pieces, 0.0);
-  for(std::size_t v = 0; v < n; ++v)
-    largest[piece[v]] = std::max(largest[piece[v]], radii[v]);
-  std::vector<double> of_vertex(n);
-  for(std::size_t v = 0; v < n; ++v)
-    of_vertex[v] = largest[piece[v]];
-  return of_vertex;
-}
-
-// The lengths that `map` gives at vertices 0 to n-1; throws, with `error` as the message,
-// when one is negative or not finite.
-template <typename LengthMap>
-std::vector<double> checked_lengths(const LengthMap& map, std::size_t n, const char* error)
-{
-  std::vector<double> lengths(n);
-  for(std::size_t v = 0; v < n; ++v)
-  {
-    lengths[v] = static_cast<double>(get(map, v));
-    if(!(lengths[v] >= 0) || !std::isfinite(lengths[v]))
-      throw std::invalid_argument(error);
-  }
-  return lengths;
-}
-
-// The optional per-vertex length map `Tag` of `np` read at each vertex of `skeleton`
-// (vertices numbered 0 to n-1); empty without one. Throws, with `error` as the message,
-// when a length is negative or not finite.
-template <typename Tag, typename CurveSkeleton, typename NamedParameters>
-std::vector<double> optional_lengths_of(const CurveSkeleton& skeleton, const NamedParameters& np, const char* error)
-{
-  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, Tag>::value)
-    return {};
-  else
-    return checked_lengths(CGAL::parameters::get_parameter(np, Tag{}), num_vertices(skeleton), error);
-}
-
-// Per-vertex lengths that a split reads besides the MAT radii; each empty when not given.
-struct Split_length_maps
-{
-  std::vector<double> sheet_half_widths; // `sheet_half_width_map`
-  std::vector<double> piece_radii;       // `piece_radius_map`
-};
-
-template <typename CurveSkeleton, typename NamedParameters>
-Split_length_maps split_length_maps(const CurveSkeleton& skeleton, const NamedParameters& np)
-{
-  return {optional_lengths_of<internal_np::sheet_half_width_map_t>(
-              skeleton, np, "split_into_bones: the sheet_half_width_map gives a negative or non-finite width"),
-          optional_lengths_of<internal_np::piece_radius_map_t>(
-              skeleton, np, "split_into_bones: the piece_radius_map gives a negative or non-finite radius")};
-}
-
-// Algorithm 2 on a skeleton read through its point and radius maps: the body of
-// split_into_bones(), with the settings checked and `control` cleared; throws when a
-// radius is negative or not finite. Each of `lengths` is empty or has one value per vertex.
-template <typename CurveSkeleton, typename VertexPointMap, typename RadiusMap, typename Point>
-void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPointMap& point_map,
-                                const RadiusMap& radius_map, const Split_length_maps& lengths,
-                                const Bone_splitting_settings& settings, Control_skeleton<Point>& control)
-{
-  const std::size_t n = num_vertices(skeleton);
-  if(n == 0)
-    return;
-
-  const std::vector<double> radii_of =
-      checked_lengths(radius_map, n, "split_into_bones: the MAT radius map gives a negative or non-finite radius");
-  auto radius = [&](std::size_t v) { return radii_of[v]; };
-  // The radius that the lengths of the split are measured in: at least `smallest_radius`,
-  // so that parts thinner than it (which a finer grid measures thinner) get no more joints;
-  // in a thin sheet, its half width, so that a wing's chain gets the joints of a limb as
-  // wide, not of one as thin.
-  std::vector<double> length_unit_of(n);
-  for(std::size_t v = 0; v < n; ++v)
-  {
-    length_unit_of[v] = (std::max)(radii_of[v], settings.smallest_radius);
-    if(!lengths.sheet_half_widths.empty())
-      length_unit_of[v] = (std::max)(length_unit_of[v], lengths.sheet_half_widths[v]);
-  }
-  Joint_graph<Point> graph;
-  std::vector<long> joint_of(n, -1);
-  auto position = [&](std::size_t v) {
-    const auto p = get(point_map, v);
-    return Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-  };
-  auto add_joint = [&](std::size_t v, Joint_kind kind) {
-    if(joint_of[v] < 0)
-    {
-      const Vec3 p = position(v);
-      Control_joint<Point> joint;
-      joint.point = Point(p[0], p[1], p[2]);
-      joint.radius = radius(v);
-      joint.kind = kind;
-      joint.skeleton_vertex = v;
-      joint_of[v] = static_cast<long>(add_vertex(joint, graph));
-    }
-    return static_cast<std::size_t>(joint_of[v]);
-  };
-  // The junctions, and the points of a piece of one point; the joints of the tips are placed
-  // with the branches that end there (set back from the tip when asked).
-  for(std::size_t v = 0; v < n; ++v)
-  {
-    const std::size_t d = boost::degree(v, skeleton);
-    if(d >= 3 || d == 0)
-      add_joint(v, d >= 3 ? Joint_kind::junction : Joint_kind::end);
-  }
-
-  // The level of detail of a piece: its largest length unit, or the radius that the
-  // `piece_radius_map` gives the piece (the widest sheet before pruning) where larger.
-  std::vector<double> piece_scale_of = length_unit_of;
-  if(!lengths.piece_radii.empty())
-    for(std::size_t v = 0; v < n; ++v)
-      piece_scale_of[v] = (std::max)(piece_scale_of[v], lengths.piece_radii[v]);
-  const std::vector<double> largest_radius_of_piece = largest_radius_of_pieces(skeleton, piece_scale_of);
-  for(Skeleton_branch branch : skeleton_branches(skeleton))
-  {
-    std::vector<std::size_t>& b = branch.vertices;
-    if(branch.closed) // start and end the loop at its thickest vertex, a joint
-    {
-      std::size_t thickest = 0;
-      for(std::size_t k = 1; k < b.size(); ++k)
-        if(radius(b[k]) > radius(b[thickest]))
-          thickest = k;
-      std::rotate(b.begin(), b.begin() + static_cast<long>(thickest), b.end());
-      b.push_back(b.front());
-      add_joint(b.front(), Joint_kind::bend);
-    }
-    std::vector<Vec3> points;
-    std::vector<double> radii;
-    for(std::size_t v : b)
-    {
-      points.push_back(position(v));
-      radii.push_back(length_unit_of[v]);
-    }
-    Branch_splitter splitter(points, radii, settings, largest_radius_of_piece[b.front()]);
-    std::vector<std::size_t> cuts = splitter.joints();
-    const std::vector<double>& arc = splitter.arc_lengths();
-    const bool front_is_tip = !branch.closed && boost::degree(b.front(), skeleton) == 1;
-    const bool back_is_tip = !branch.closed && boost::degree(b.back(), skeleton) == 1;
-    set_back_tip_joints(arc, front_is_tip, back_is_tip, settings.tip_joint_setback, cuts);
-    // A tie goes towards the body: the end that is not a tip (mirror-image limbs alike).
-    space_joints(arc, settings.joint_spacing, cuts, front_is_tip && !back_is_tip);
-    for(std::size_t c = 0; c + 1 < cuts.size(); ++c)
-    {
-      Control_bone<Point> bone;
-      const std::size_t first = add_joint(b[cuts[c]], c == 0 && front_is_tip ? Joint_kind::end : Joint_kind::bend);
-      const std::size_t last =
-          add_joint(b[cuts[c + 1]], c + 2 == cuts.size() && back_is_tip ? Joint_kind::end : Joint_kind::bend);
-      for(std::size_t k = cuts[c]; k <= cuts[c + 1]; ++k)
-      {
-        bone.points.emplace_back(points[k][0], points[k][1], points[k][2]);
-        if(k > cuts[c])
-          bone.length += norm3(sub(points[k], points[k - 1]));
-      }
-      add_bone(first, last, std::move(bone), graph);
-    }
-  }
-  control = root_joint_graph(graph);
-}
-
-} // namespace internal
 
 /// \ingroup PkgGeodesicSkeletonRef
 /// The `smallest_radius` that `extract_control_skeleton()` gives `split_into_bones()` on a
@@ -287,10 +68,10 @@ inline double default_joint_spacing(double voxel_size, int resolution,
 /// it strays from its chord by more than `straightness_tolerance` MAT radii (each radius
 /// taken as at least the radius of the rig's level of detail below), leaving only
 /// bones longer than `minimum_bone_length_factor` MAT radii (each radius taken as at least
-/// `smallest_radius`, and as at least the sheet's half width where a `sheet_half_width_map`
-/// gives one) and longer than `minimum_bone_length_of_piece_factor` times the largest MAT
-/// radius of its connected component (the rig's level of detail; at least what a
-/// `piece_radius_map` gives the component), clearly longer: a part
+/// `smallest_radius`, and as at least the vertex's `sheet_half_width` where the vertex
+/// bundle has one) and longer than `minimum_bone_length_of_piece_factor` times the largest MAT
+/// radius of its connected component (the rig's level of detail; at least the largest
+/// `piece_radius` of the component's vertices), clearly longer: a part
 /// exactly twice that length stays whole, whatever the rounding; a straight bone longer than
 /// `maximum_bone_length_factor` times the largest MAT radius of its connected component
 /// (the body's thickness; a straight limb has no bend to cut at) is cut
@@ -298,8 +79,9 @@ inline double default_joint_spacing(double voxel_size, int resolution,
 /// equal-length position (an elbow, a knee, a wrist); each component is rooted at
 /// its most central junction; when the shape has handles, the bones left off the trees (one
 /// per independent cycle) are in the graph bundle's `Control_skeleton_property::cut_bones`.
-/// Where asked (`tip_joint_setback`, `joint_spacing`), the joints of the tips move back along
-/// their bones and long bones are cut at a spacing, as artists place joints.
+/// As artists place joints, the joints of the tips move back along their bones
+/// (`tip_joint_setback`; 0 keeps them at the tips) and, where asked (`joint_spacing`), long
+/// bones are cut at a spacing.
 /// The steps are described in the manual, section
 /// \ref manual_split_into_bones.
 ///
@@ -315,7 +97,16 @@ inline double default_joint_spacing(double voxel_size, int resolution,
 ///         or `CGAL::Mean_curvature_flow_skeletonization<TriangleMesh>::Skeleton`, usually
 ///         after `smooth_skeleton()`. Its vertex bundle has a `point` member (a CGAL point)
 ///         unless a `vertex_point_map` is given, and a `radius` member (`double`, world
-///         units) unless a `mat_radius_map` is given.
+///         units) unless a `mat_radius_map` is given. When it also has the members
+///         `sheet_half_width` and `piece_radius` (`double`, world units, each finite and at
+///         least 0), as `Curve_skeleton_vertex` has, the split reads them: where a vertex's
+///         sheet half width is larger than its radius, the lengths of the split (chords,
+///         straightness, shortest and longest bone) are measured in it (a sheet's chain gets
+///         the joints of a limb as wide, not as thin; the joints keep their own radius), and
+///         the largest MAT radius of a connected component (R: the rig's level of detail,
+///         the longest straight bone, the floor of the straightness) is at least the largest
+///         piece radius of its vertices (a chain that pruning kept beside a sheet, a bar
+///         beside a plate, gets the sheet's level of detail).
 /// \tparam Point the point type of the output.
 /// \param skeleton the curve skeleton.
 /// \param control receives the control skeleton (cleared first), a forest whose vertices
@@ -399,35 +190,6 @@ inline double default_joint_spacing(double voxel_size, int resolution,
 ///     \cgalParamDefault{0 (the MAT radius as it is); `extract_control_skeleton()` passes
 ///                       half a voxel of the default grid}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{sheet_half_width_map}
-///     \cgalParamDescription{at each skeleton vertex that runs through a thin sheet (a wing,
-///                           a fin, a cape), the sheet's half width, in world units; 0
-///                           elsewhere. Where it is larger than the radius, the lengths of the
-///                           split (chords, straightness, shortest and longest bone) are
-///                           measured in it instead: a sheet's chain gets the joints of a limb
-///                           as wide, not as thin; the joints keep their own radius. Each
-///                           value finite and at least 0 (package parameter)}
-///     \cgalParamType{a model of `ReadablePropertyMap` with the skeleton's vertex descriptor
-///                    as key type and `double` as value type}
-///     \cgalParamDefault{none (0 everywhere); `extract_control_skeleton()` passes
-///                       `sheet_half_widths()` of its thinning's sheet radii}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{piece_radius_map}
-///     \cgalParamDescription{a radius per skeleton vertex, in world units, that the largest
-///                           MAT radius of the vertex's connected component (R, which sets the
-///                           rig's level of detail, the longest straight bone and the floor of
-///                           the straightness) is taken as at least: R is the largest of the
-///                           component's radii (as the split measures them) and of this map's
-///                           values over the component. Pruning judges a piece's twigs by the
-///                           widest sheet of the whole piece; a chain that it keeps beside the
-///                           sheet (a bar beside a plate) gets the same level of detail through
-///                           this map. Each value finite and at least 0 (package parameter)}
-///     \cgalParamType{a model of `ReadablePropertyMap` with the skeleton's vertex descriptor
-///                    as key type and `double` as value type}
-///     \cgalParamDefault{none (R from the radii alone); `extract_control_skeleton()` passes
-///                       the half width of the widest sheet of each piece before pruning
-///                       (`widest_sheet_radius_of_pieces()`, read by `sheet_half_widths()`)}
-///   \cgalParamNEnd
 ///   \cgalParamNBegin{chord_length_factors}
 ///     \cgalParamDescription{the chord lengths of the accumulation, in MAT radii, each in
 ///                           [0.001, 1000] (package parameter)}
@@ -442,7 +204,7 @@ inline double default_joint_spacing(double voxel_size, int resolution,
 ///                           branch, in [0, 0.45]; the vertices beyond it are in no bone. A lone
 ///                           bone with two tips is set back from both (package parameter)}
 ///     \cgalParamType{`double`}
-///     \cgalParamDefault{0 (joints at the tips); `extract_control_skeleton()` passes 0.3}
+///     \cgalParamDefault{0.3, as `extract_control_skeleton()` uses it (0: joints at the tips)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{joint_spacing}
 ///     \cgalParamDescription{the length, in world units, that bones are cut into after the
@@ -457,8 +219,8 @@ inline double default_joint_spacing(double voxel_size, int resolution,
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// \throws std::invalid_argument when a parameter is out of range, or the radius map, the
-///         sheet half width map or the piece radius map gives a negative or non-finite value.
+/// \throws std::invalid_argument when a parameter is out of range, or the radius map, a
+///         vertex's `sheet_half_width` or its `piece_radius` is negative or not finite.
 ///
 /// \b Complexity: O(N log N * c) for N skeleton vertices and c chords per point in
 /// practice (each recursion level scans its part), plus O(J B log B) to root the J joints
@@ -477,7 +239,7 @@ void split_into_bones(const CurveSkeleton& skeleton, Control_skeleton<Point>& co
   if constexpr(internal::has_radius_map<CurveSkeleton, NamedParameters>())
     internal::split_into_bones_with_maps(skeleton, internal::skeleton_point_map(skeleton, np),
                                          internal::skeleton_radius_map(skeleton, np),
-                                         internal::split_length_maps(skeleton, np), settings, control);
+                                         internal::split_length_maps(skeleton), settings, control);
 }
 
 } // namespace Geodesic_skeleton

@@ -48,8 +48,6 @@ CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(minimum_bone_length_factor)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(maximum_bone_length_factor)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(minimum_bone_length_of_piece_factor)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(smallest_radius)
-CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(sheet_half_width_map)
-CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(piece_radius_map)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(chord_length_factors)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(tip_joint_setback)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(joint_spacing)
@@ -82,5 +80,8 @@ CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(minimum_weight)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(influence_ratio)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(bone_segmentation_map)
 
-// thin (output, appended); prune_skeleton reads piece_radius_map too
+// thin (output, appended)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(slanted_sheet_radius_map)
+
+// prune_skeleton (voxel-keyed, in voxels)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(piece_radius_map)

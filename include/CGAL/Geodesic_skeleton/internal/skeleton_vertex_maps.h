@@ -54,6 +54,15 @@ template <typename Bundle>
 struct has_voxel_member<Bundle, std::void_t<decltype(std::declval<Bundle&>().voxel)>> : std::true_type
 {};
 
+// Whether a vertex bundle has the data members `sheet_half_width` and `piece_radius`.
+template <typename Bundle, typename = void>
+struct has_sheet_members : std::false_type
+{};
+template <typename Bundle>
+struct has_sheet_members<Bundle, std::void_t<decltype(std::declval<Bundle&>().sheet_half_width),
+                                             decltype(std::declval<Bundle&>().piece_radius)>> : std::true_type
+{};
+
 // The vertex bundle of a graph (const or not).
 template <typename Graph>
 using vertex_bundle_t = typename boost::vertex_bundle_type<std::remove_const_t<Graph>>::type;

@@ -77,7 +77,6 @@ struct Control_skeleton_settings
   int level_of_detail_resolution = default_voxel_resolution;
   std::optional<int> smoothing_window;
   std::optional<double> smallest_radius;
-  double tip_joint_setback = 0;
   std::optional<double> joint_spacing;
   double joint_spacing_factor = 0;
   Bone_splitting_settings split; // bend threshold, straightness, bone lengths, chords
@@ -122,7 +121,7 @@ Control_skeleton_settings control_skeleton_settings(const NamedParameters& np, c
   checked(ranges::smoothing_window, internal_np::smoothing_window_tag,
           static_cast<int>(ranges::smoothing_window.default_value));
   s.smoothing_window = given_parameter(np, internal_np::smoothing_window_tag, int());
-  s.split = bone_splitting_settings(np, caller); // checks tip_joint_setback and joint_spacing too, when given
+  s.split = bone_splitting_settings(np, caller); // tip_joint_setback too; joint_spacing when given
   s.joint_spacing_factor = checked(ranges::joint_spacing_factor, internal_np::joint_spacing_factor_tag,
                                    ranges::joint_spacing_factor.default_value);
   s.level_of_detail_resolution = checked(ranges::level_of_detail_resolution,
@@ -130,8 +129,6 @@ Control_skeleton_settings control_skeleton_settings(const NamedParameters& np, c
   checked(ranges::number_of_reeb_intervals, internal_np::number_of_reeb_intervals_tag,
           static_cast<std::size_t>(ranges::number_of_reeb_intervals.default_value)); // read with the Reeb graph
   s.smallest_radius = given_parameter(np, internal_np::smallest_radius_tag, double());
-  s.tip_joint_setback = choose_parameter(get_parameter(np, internal_np::tip_joint_setback_tag),
-                                         ranges::tip_joint_setback.default_value);
   s.joint_spacing = given_parameter(np, internal_np::joint_spacing_tag, double());
   return s;
 }

@@ -197,17 +197,20 @@ void extract_control_skeleton_with(
       internal::sheet_half_widths_through(curve, sheet_radii, coarser_voxel, pruning_voxel_size);
   const std::vector<double> piece_widths =
       internal::sheet_half_widths_through(curve, widest_sheet_of_piece, coarser_voxel, pruning_voxel_size);
+  for(std::size_t v = 0; v < num_vertices(curve); ++v)
+  {
+    curve[v].sheet_half_width = sheet_widths[v];
+    curve[v].piece_radius = piece_widths[v];
+  }
   // Chains end short of the tips and long bones get joints in between, as artists place them;
   // the spacing is a share of the whole shape, so a character gets as many joints at any size.
-  report.tip_joint_setback = settings.tip_joint_setback;
+  report.tip_joint_setback = settings.split.tip_joint_setback;
   report.joint_spacing = settings.joint_spacing.value_or(
       default_joint_spacing(report.voxel_size, report.resolution, settings.joint_spacing_factor));
   split_into_bones(curve, out,
                    parameters::combine(parameters::smallest_radius(report.smallest_radius),
                                        parameters::tip_joint_setback(report.tip_joint_setback),
                                        parameters::joint_spacing(report.joint_spacing),
-                                       parameters::sheet_half_width_map(CGAL::make_property_map(sheet_widths)),
-                                       parameters::piece_radius_map(CGAL::make_property_map(piece_widths)),
                                        parameters::bend_threshold(settings.split.bend_threshold),
                                        parameters::straightness_tolerance(settings.split.straightness_tolerance),
                                        parameters::minimum_bone_length_factor(settings.split.minimum_bone_length_factor),

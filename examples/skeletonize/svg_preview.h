@@ -1,11 +1,11 @@
 // Copyright (c) 2026 The Geodesic_skeleton authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_GEODESIC_SKELETON_IO_SVG_PREVIEW_H
-#define CGAL_GEODESIC_SKELETON_IO_SVG_PREVIEW_H
+#ifndef GEODESIC_SKELETON_SKELETONIZE_SVG_PREVIEW_H
+#define GEODESIC_SKELETON_SKELETONIZE_SVG_PREVIEW_H
 
-/// \file IO/svg_preview.h
-/// A dependency-free SVG picture of a mesh with its control skeleton drawn over it.
+// The SVG picture that skeletonize --svg draws (and the fuzzer exercises): the program's,
+// not the package's. Dependency-free: a mesh with a skeleton drawn over it in three views.
 
 #include <CGAL/Geodesic_skeleton/Control_skeleton.h>
 #include <CGAL/Geodesic_skeleton/internal/voxelize/principal_frame.h>
@@ -400,4 +400,4 @@ std::ostream& write_svg_views(std::ostream& os, const FaceGraph& mesh, const Svg
 } // namespace Geodesic_skeleton
 } // namespace CGAL
 
-#endif // CGAL_GEODESIC_SKELETON_IO_SVG_PREVIEW_H
+#endif // GEODESIC_SKELETON_SKELETONIZE_SVG_PREVIEW_H
