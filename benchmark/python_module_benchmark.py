@@ -151,7 +151,8 @@ def batch_control(skeletonize, paths):
     threads of the C++ program gain on this machine now."""
     with tempfile.TemporaryDirectory() as folder:
         listing = pathlib.Path(folder) / "meshes.txt"
-        listing.write_text("".join(str(p) + "\n" for p in paths))
+        # Absolute paths: a list file's relative paths are read from the list's own folder.
+        listing.write_text("".join(str(pathlib.Path(p).resolve()) + "\n" for p in paths))
         times = []
         for threads in (1, 2):
             start = time.perf_counter()
