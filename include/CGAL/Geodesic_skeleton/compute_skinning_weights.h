@@ -192,7 +192,8 @@ inline void normalise(Bone_weights& weights)
 /// over the bones leaving it) is raised to the power `sharpness` (artists blend over a
 /// narrower band than the heat does), the `max_bones_per_vertex` largest weights are kept,
 /// those under `minimum_weight` of a vertex's total dropped, and the rest scaled to sum 1.
-/// The manual, section \ref manual_skinning_method, gives the calibration on artists' weights.
+/// The manual, section \ref manual_skinning_method, explains the method and its constants; the
+/// calibration on artists' weights is in benchmark/EXPERIMENTS.md.
 ///
 /// The skeleton may be any: from `extract_control_skeleton()` or `split_into_bones()`, or
 /// filled by hand (joints with their points, bones as edges from parent to child; `points`
