@@ -142,14 +142,6 @@ def points_along(a, b, step):
     return np.concatenate(parts)
 
 
-def end_joints(joints, bones):
-    degree = np.zeros(len(joints), int)
-    for a, b in bones:
-        degree[a] += 1
-        degree[b] += 1
-    return joints[degree == 1] if bones else joints
-
-
 def leaf_joint_mask(joints, bones):
     """The joints that are no bone's parent (bones go from parent to child)."""
     leaf = np.ones(len(joints), bool)
