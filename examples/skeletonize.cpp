@@ -24,6 +24,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -273,7 +274,8 @@ struct Skinning
   std::vector<int> segment; // the bone of largest weight of each vertex
   gs::Skinning_report report;
   const Mesh& mesh;
-  std::string input; // the mesh file
+  std::string input;            // the mesh file
+  bool file_numbering = false;  // the mesh's vertex i is the file's point i
 };
 
 // `solid`: the chain's voxelization of the mesh at `o.resolution`, if it ran (none with a
@@ -329,10 +331,7 @@ std::vector<std::size_t> mesh_vertex_of_file_points(const std::string& path, con
   return vertex_of;
 }
 
-// The report's "skinning" and "weights": the settings and costs, and the non-zero weights
-// as three parallel arrays (vertex, bone, weight), vertex by vertex, largest weight first.
-// Vertices are numbered as in the input file when CGAL reads its format (the mesh's own
-// numbering for the scene formats read through Assimp).
+// The report's "skinning": the settings and costs.
 void add_skinning_json(const Options& o, const Skinning& skinning, nlohmann::json& json)
 {
   const gs::Skinning_report& r = skinning.report;
@@ -343,30 +342,91 @@ void add_skinning_json(const Options& o, const Skinning& skinning, nlohmann::jso
                       {"voxel_visits", r.voxel_visits},
                       {"vertices_bound_in_straight_line", r.vertices_bound_in_straight_line},
                       {"milliseconds", r.milliseconds}};
-  if(!o.weights)
-    return;
+}
+
+// Appends the report's "weights" to `out`: the non-zero weights as three parallel arrays
+// (vertex, bone, weight), vertex by vertex, largest weight first. Vertices are numbered as
+// in the input file when CGAL reads its format (the mesh's own numbering for the scene
+// formats read through Assimp). The numbers are written by std::to_chars straight into
+// `out`, each in its shortest form that reads back to the same value: millions of weights
+// in a fraction of the time a JSON tree of them costs.
+void append_weights_json(std::string& out, const Skinning& skinning)
+{
   std::vector<std::size_t> mesh_vertex(skinning.weights.size());
   for(std::size_t v = 0; v < mesh_vertex.size(); ++v)
     mesh_vertex[v] = v;
-  if(!is_scene_file(skinning.input))
+  if(!is_scene_file(skinning.input) && !skinning.file_numbering)
     mesh_vertex = mesh_vertex_of_file_points(skinning.input, skinning.mesh);
-  std::vector<std::size_t> vertex, bone;
-  std::vector<float> weight;
-  for(std::size_t v = 0; v < mesh_vertex.size(); ++v)
-    for(std::size_t i = 0; i < skinning.weights[mesh_vertex[v]].size(); ++i)
+  std::size_t pairs = 0;
+  for(std::size_t v : mesh_vertex)
+    pairs += skinning.weights[v].size();
+  // The text goes through a small buffer, appended to `out` when full (`out` reserved once,
+  // for about 25 characters per pair, so that it grows rarely).
+  out.reserve(out.size() + 64 + 25 * pairs);
+  char buffer[1 << 16];
+  char* p = buffer;
+  auto flush_if_full = [&] {
+    if(p > buffer + sizeof buffer - 64)
     {
-      vertex.push_back(v);
-      bone.push_back(skinning.weights[mesh_vertex[v]].bone[i]);
-      weight.push_back(skinning.weights[mesh_vertex[v]].weight[i]);
+      out.append(buffer, std::size_t(p - buffer));
+      p = buffer;
     }
-  json["weights"] = {{"vertices", mesh_vertex.size()}, {"vertex", vertex}, {"bone", bone}, {"weight", weight}};
+  };
+  auto text = [&](const char* s) {
+    for(; *s != 0; ++s)
+      *p++ = *s;
+    flush_if_full();
+  };
+  auto array = [&](const char* name, auto number_of) {
+    text(name);
+    *p++ = '[';
+    bool first = true;
+    for(std::size_t v = 0; v < mesh_vertex.size(); ++v)
+    {
+      const gs::Bone_weights& w = skinning.weights[mesh_vertex[v]];
+      for(std::size_t i = 0; i < w.size(); ++i)
+      {
+        if(!first)
+          *p++ = ',';
+        first = false;
+        p = std::to_chars(p, p + 32, number_of(v, w, i)).ptr;
+        flush_if_full();
+      }
+    }
+    *p++ = ']';
+  };
+  const std::string vertices = "{\"vertices\": " + std::to_string(mesh_vertex.size());
+  text(vertices.c_str());
+  array(", \"vertex\": ", [](std::size_t v, const gs::Bone_weights&, std::size_t) { return std::uint32_t(v); });
+  array(", \"bone\": ", [](std::size_t, const gs::Bone_weights& w, std::size_t i) { return w.bone[i]; });
+  array(", \"weight\": ", [](std::size_t, const gs::Bone_weights& w, std::size_t i) { return w.weight[i]; });
+  *p++ = '}';
+  out.append(buffer, std::size_t(p - buffer));
+}
+
+// The report's text: `json`, and then, when `skinning` is not null, the weights as its last
+// member "weights" (after every other key: the tree's keys are in alphabetical order).
+std::string report_text(const nlohmann::json& json, const Skinning* skinning)
+{
+  std::string text = json.dump(1);
+  if(skinning != nullptr)
+  {
+    text.pop_back(); // the closing brace
+    text += ",\n \"weights\": ";
+    append_weights_json(text, *skinning);
+    text += "\n}";
+  }
+  text += '\n';
+  return text;
 }
 
 // Reads any mesh CGAL reads, and FBX, glTF/GLB and DAE files through Assimp (a file that is
 // not a clean manifold is repaired); the library's readers name the file and the problem.
-Mesh read_mesh(const std::string& path)
+// `file_numbering` is set when the mesh's vertex i is the file's point i.
+Mesh read_mesh(const std::string& path, bool& file_numbering)
 {
   Mesh mesh;
+  file_numbering = false;
   try
   {
     if(is_scene_file(path))
@@ -375,7 +435,7 @@ Mesh read_mesh(const std::string& path)
         throw Usage_error(problem);
     }
     else
-      gs::IO::read_mesh(path, mesh);
+      file_numbering = gs::IO::read_mesh(path, mesh);
   }
   catch(const std::runtime_error& e)
   {
@@ -465,7 +525,8 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
   const bool to_json = output.empty() || ends_with(output, ".json");
   const bool to_gltf = is_gltf_output(output);
   const bool given_skeleton = !o.skeleton.empty();
-  const Mesh mesh = read_mesh(input);
+  bool file_numbering = false;
+  const Mesh mesh = read_mesh(input, file_numbering);
   Mesh_summary summary;
   summary.read_ms = milliseconds_since(start);
   gs::Curve_skeleton<Point, vertex_descriptor> curve, thinned;
@@ -500,7 +561,7 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
   {
     throw Usage_error(input + ": " + e.what());
   }
-  Skinning skinning{{}, {}, {}, mesh, input};
+  Skinning skinning{{}, {}, {}, mesh, input, file_numbering};
   if(skin)
     compute_skinning(o, input, control, given_skeleton ? nullptr : &solid, skinning);
 
@@ -513,7 +574,7 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
                            {"timings_ms", {{"skinning_weights", skinning.report.milliseconds}}},
                            {"control", gs::IO::control_skeleton_to_json(control)}};
     add_skinning_json(o, skinning, json); // a given skeleton is always skinned
-    text = json.dump(1) + "\n";
+    text = report_text(json, o.weights ? &skinning : nullptr);
   }
   else if(to_json)
   {
@@ -578,7 +639,7 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
                      {"cut_bones", control_json["cut_bones"]}, {"roots", control_json["roots"]}}}};
     if(skin)
       add_skinning_json(o, skinning, json);
-    text = json.dump(1) + "\n";
+    text = report_text(json, skin && o.weights ? &skinning : nullptr);
   }
   else if(to_gltf)
   {

@@ -14,11 +14,12 @@
 #include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
+#include <CGAL/Geodesic_skeleton/internal/skinning/cluster_normals.h>
 #include <CGAL/Geodesic_skeleton/internal/skinning/heat_sources.h>
 #include <CGAL/Geodesic_skeleton/internal/skinning/inscribed_balls.h>
 #include <CGAL/Geodesic_skeleton/internal/skinning/skinning_fields.h>
+#include <CGAL/Geodesic_skeleton/internal/skinning/surface_clusters.h>
 #include <CGAL/Geodesic_skeleton/internal/skinning/surface_heat.h>
-#include <CGAL/Geodesic_skeleton/internal/skinning/vertex_normals.h>
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 #include <CGAL/Geodesic_skeleton/voxelize.h>
@@ -83,16 +84,41 @@ std::vector<Vec3> bone_polyline_in_grid(const Control_skeleton<Point>& skeleton,
   return polyline;
 }
 
-// Throws unless `grid` has the frame that voxelize() gives `mesh` with the parameters `np`
-// (a grid of another mesh, or at another resolution, would give wrong weights silently).
-template <typename TriangleMesh, typename VertexPointMap, typename NamedParameters>
-void check_voxelized_solid(const TriangleMesh& mesh, const VertexPointMap& vpm, const Dense_voxel_grid& grid,
-                           const NamedParameters& np, const char* caller)
+// Throws unless `grid` is, as far as the mesh's vertices tell, the grid that voxelize()
+// gives the mesh at `resolution` (a grid of another mesh, or at another resolution, would
+// give wrong weights silently): in the grid's frame, the vertices of the faces span
+// `resolution` voxels along their longest axis and sit centred in the box with one voxel of
+// margin, as voxelize_frame() places them. O(V): the frame is not computed again.
+inline void check_grid_frame(const std::vector<Vec3>& grid_points,
+                             const std::vector<std::array<std::uint32_t, 3>>& triangles, int resolution,
+                             bool empty_grid, const char* caller)
 {
-  const int resolution = voxelize_settings(np, caller).resolution;
-  Voxel_box box;
-  const Voxel_frame frame = voxelize_frame(mesh_triangles(mesh, vpm, caller), resolution, box, caller);
-  if(!(grid.frame() == frame) || grid.empty())
+  std::vector<bool> of_a_face(grid_points.size(), false);
+  for(const auto& t : triangles)
+    for(std::uint32_t v : t)
+      of_a_face[v] = true;
+  Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for(std::size_t v = 0; v < grid_points.size(); ++v)
+    if(of_a_face[v])
+      for(std::size_t a = 0; a < 3; ++a)
+      {
+        lo[a] = std::min(lo[a], grid_points[v][a]);
+        hi[a] = std::max(hi[a], grid_points[v][a]);
+      }
+  const double tolerance = 1e-6 * resolution;
+  bool matches = !empty_grid && std::abs(std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}) - resolution) <= tolerance;
+  for(std::size_t a = 0; a < 3 && matches; ++a)
+  {
+    // The box has an odd number n of voxels across the extent e, and one of margin: the
+    // lowest vertex at 1 + (n - e) / 2 (n is rounded up from e, so a rounding may take the next odd number).
+    const double e = hi[a] - lo[a];
+    int n = std::max(1, int(std::ceil(e - 1e-9)));
+    n += 1 - n % 2;
+    matches = false;
+    for(int candidate : {n - 2, n, n + 2})
+      matches = matches || (candidate >= 1 && std::abs(lo[a] - (1 + 0.5 * (candidate - e))) <= tolerance);
+  }
+  if(!matches)
     throw std::invalid_argument(std::string(caller) + ": the voxelized_solid is not the solid voxelize() gives this "
                                 "mesh at resolution " + std::to_string(resolution));
 }
@@ -106,59 +132,56 @@ void check_bones(const Control_skeleton<Point>& skeleton, const char* caller)
     throw std::invalid_argument(std::string(caller) + ": too many bones");
 }
 
-// Raises each joint's weight (the sum over the bones that leave it, which all turn about
-// it) to the power `exponent`, sharing it among those bones as before: the joint that leads
-// keeps its lead and the blend around a joint narrows.
-inline void sharpen(Bone_weights& weights, double exponent, const std::vector<std::size_t>& joint_of_bone)
-{
-  std::array<double, Bone_weights::capacity> joint_total{};
-  for(std::size_t i = 0; i < weights.size(); ++i)
-    for(std::size_t j = 0; j < weights.size(); ++j)
-      if(joint_of_bone[weights.bone[j]] == joint_of_bone[weights.bone[i]])
-        joint_total[i] += weights.weight[j];
-  for(std::size_t i = 0; i < weights.size(); ++i)
-    weights.weight[i] = float(weights.weight[i] * std::pow(joint_total[i], exponent - 1));
-}
-
-// Keeps the `k` largest weights.
-inline void keep_largest_bones(Bone_weights& weights, std::size_t k)
-{
-  Bone_weights kept;
-  for(std::size_t i = 0; i < weights.size(); ++i)
-    keep_largest(kept, k, weights.bone[i], weights.weight[i]);
-  weights = kept;
-}
-
-// Drops the weights under `minimum` times the vertex's total, but never its largest.
-inline void drop_small_weights(Bone_weights& weights, double minimum)
-{
-  const double total = weights.total();
-  float largest = 0;
-  for(std::size_t i = 0; i < weights.size(); ++i)
-    largest = std::max(largest, weights.weight[i]);
-  Bone_weights kept;
-  for(std::size_t i = 0; i < weights.size(); ++i)
-    if(weights.weight[i] >= minimum * total || weights.weight[i] == largest)
-      kept.push_back(weights.bone[i], weights.weight[i]);
-  weights = kept;
-}
-
-// Sorts the pairs by decreasing weight (bone index for ties) and scales them to sum 1.
-inline void normalise(Bone_weights& weights)
+// Turns the diffused weights of a vertex into its skinning weights: raises each joint's
+// weight (the sum over the bones that leave it, which all turn about it) to the power
+// `exponent`, sharing it among those bones as before (the joint that leads keeps its lead
+// and the blend around a joint narrows); keeps the `k` largest, drops those under
+// `minimum` of their total (never the largest), and scales the rest to sum 1, by
+// decreasing weight (bone number for ties).
+inline void finish_weights(Bone_weights& weights, double exponent, const std::vector<std::uint32_t>& joint_of_bone,
+                           std::size_t k, double minimum)
 {
   const std::size_t n = weights.size();
+  if(n == 0)
+    return;
+  std::array<std::uint32_t, Bone_weights::capacity> joint{};
+  std::array<float, Bone_weights::capacity> sharpened{};
+  for(std::size_t i = 0; i < n; ++i)
+    joint[i] = joint_of_bone[weights.bone[i]];
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    double joint_total = 0;
+    for(std::size_t j = 0; j < n; ++j)
+      if(joint[j] == joint[i])
+        joint_total += weights.weight[j];
+    sharpened[i] = weights.weight[i] * std::pow(float(joint_total), float(exponent - 1));
+  }
   std::array<std::size_t, Bone_weights::capacity> order{};
-  for(std::size_t i = 0; i < n; ++i)
-    order[i] = i;
-  std::sort(order.begin(), order.begin() + std::ptrdiff_t(n), [&](std::size_t a, std::size_t b) {
-    return weights.weight[a] != weights.weight[b] ? weights.weight[a] > weights.weight[b]
-                                                  : weights.bone[a] < weights.bone[b];
-  });
-  const double total = weights.total();
-  Bone_weights sorted;
-  for(std::size_t i = 0; i < n; ++i)
-    sorted.push_back(weights.bone[order[i]], float(weights.weight[order[i]] / total));
-  weights = sorted;
+  for(std::size_t i = 0; i < n; ++i) // insertion sort: a handful of pairs
+  {
+    std::size_t j = i;
+    for(; j > 0; --j)
+    {
+      const std::size_t o = order[j - 1];
+      if(sharpened[o] > sharpened[i] || (sharpened[o] == sharpened[i] && weights.bone[o] < weights.bone[i]))
+        break;
+      order[j] = o;
+    }
+    order[j] = i;
+  }
+  const std::size_t kept = std::min(n, k);
+  double total = 0;
+  for(std::size_t i = 0; i < kept; ++i)
+    total += sharpened[order[i]];
+  Bone_weights result;
+  double kept_total = 0;
+  for(std::size_t i = 0; i < kept; ++i)
+    if(i == 0 || sharpened[order[i]] >= minimum * total)
+      kept_total += sharpened[order[i]];
+  for(std::size_t i = 0; i < kept; ++i)
+    if(i == 0 || sharpened[order[i]] >= minimum * total)
+      result.push_back(weights.bone[order[i]], float(sharpened[order[i]] / kept_total));
+  weights = result;
 }
 
 } // namespace internal
@@ -188,7 +211,15 @@ inline void normalise(Bone_weights& weights)
 /// Laplacian (obtuse angles' negative cotangents clamped to 0, so that the weights stay in
 /// [0, 1]). The system is positive definite on any mesh (open, in pieces, with degenerate
 /// triangles), so the solve does not fail where bone heat does, and all lengths are in
-/// voxels, so the weights do not depend on the mesh's scale. Each joint's weight (the sum
+/// voxels, so the weights do not depend on the mesh's scale. All of this is done at the
+/// scale of the voxels, where the heat varies: the vertices are clustered by cells half a
+/// voxel across (a cell's vertices joined by the mesh's edges inside it, so that two limbs
+/// through one cell stay apart), each cluster standing at its vertices' centroid with their
+/// area and mean normal; the heat is solved on the clustered surface (a vertex per cluster,
+/// a triangle per mesh triangle whose corners fall in three clusters), and each vertex reads
+/// its cluster's weights with their gradient there (a least-squares fit over the
+/// neighbouring clusters). A mesh no finer than the cells is its own clustering; a finer one
+/// costs the solve no more than the grid does. Each joint's weight (the sum
 /// over the bones leaving it) is raised to the power `sharpness` (artists blend over a
 /// narrower band than the heat does), the `max_bones_per_vertex` largest weights are kept,
 /// those under `minimum_weight` of a vertex's total dropped, and the rest scaled to sum 1.
@@ -256,7 +287,7 @@ inline void normalise(Bone_weights& weights)
 ///     \cgalParamType{as for `voxelize()`}
 ///     \cgalParamDefault{as for `voxelize()` (resolution `default_voxel_resolution`, 64)}
 ///     \cgalParamExtra{The memory need is checked first: about 21 bytes per voxel of the
-///                     solid's box, 16 per solid voxel and about 900 per vertex (the sparse factorisation), besides
+///                     solid's box, 16 per solid voxel and about 250 per vertex (its position, weights and cluster), besides
 ///                     `voxelize()`'s.}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{voxelized_solid}
@@ -287,15 +318,17 @@ inline void normalise(Bone_weights& weights)
 ///         range (the message names it); what `voxelize()` throws.
 /// \throws std::length_error when the fields would need more memory than `memory_limit`.
 ///
-/// \b Complexity: `voxelize()`'s (O(F) for the check of the frame instead, with a
-/// `voxelized_solid`), plus O(V) for the nearest-bone search over the V solid
-/// voxels (a bucket queue), plus O(V_b) per bone for the V_b voxels its bounded search visits
-/// (in total a small multiple of V: `Skinning_report::voxel_visits`), plus O(N B_v P) for
-/// N vertices, B_v bones reaching a vertex and P points per bone polyline, plus O(V_box) for
-/// the solid's `distance_transform()` over the V_box voxels of its box and O(N R) for the
-/// inscribed balls (R the solid's largest MAT radius in voxels), plus the sparse
-/// Cholesky factorisation of the N x N system (about O(N^1.5) on a surface) and one solve
-/// per bone (O(F) for the F non-zeros of the factor); O(V_box + V + F) memory.
+/// \b Complexity: `voxelize()`'s (O(N) for the check of the frame instead, with a
+/// `voxelized_solid`), plus O(N + F) for the clustering of the N vertices and F faces into
+/// C clusters (C is at most N, and about 8 per surface voxel on a mesh finer than the grid),
+/// plus O(V) for the nearest-bone search over the V solid voxels (a bucket queue), plus
+/// O(V_b) per bone for the V_b voxels its bounded search visits (in total a small multiple
+/// of V: `Skinning_report::voxel_visits`), plus O(C B_c P) for B_c bones reaching a
+/// cluster and P points per bone polyline, plus O(V_box) for the solid's
+/// `distance_transform()` over the V_box voxels of its box and O(C R) for the inscribed
+/// balls (R the solid's largest MAT radius in voxels), plus the sparse Cholesky
+/// factorisation of the C x C system (about O(C^1.5)) and one solve per bone, plus O(N) to
+/// read the weights at the vertices; O(V_box + V + N + F) memory.
 template <typename TriangleMesh, typename Point, typename WeightMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control_skeleton<Point>& skeleton,
@@ -335,9 +368,7 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   Dense_voxel_grid own_grid;
   const Dense_voxel_grid* given_grid =
       choose_parameter(get_parameter(np, internal_np::voxelized_solid_tag), static_cast<const Dense_voxel_grid*>(nullptr));
-  if(given_grid != nullptr)
-    internal::check_voxelized_solid(mesh, vpm, *given_grid, np, caller);
-  else
+  if(given_grid == nullptr)
     voxelize(mesh, own_grid, np);
   const Dense_voxel_grid& grid = given_grid != nullptr ? *given_grid : own_grid;
   report.solid_voxels = grid.size();
@@ -348,7 +379,7 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   const std::size_t n = num_vertices(mesh);
   {
     const internal::Grid_layout layout(grid.bounding_box().grown(1));
-    internal::require_memory(21. * double(layout.volume()) + 16. * double(report.solid_voxels) + 900. * double(n),
+    internal::require_memory(21. * double(layout.volume()) + 16. * double(report.solid_voxels) + 250. * double(n),
                              limit, layout, caller, "the distance fields of a grid");
   }
   const internal::Solid_voxels solid(grid);
@@ -366,15 +397,26 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
     grid_points[i] =
         frame.to_grid(internal::Vec3{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())});
   }
-  const internal::Vertex_cells cells(solid, std::move(grid_points));
-
   const auto triangles = internal::triangles_of(mesh, vim);
-  const std::vector<internal::Vec3> normals = internal::outward_vertex_normals(cells.grid_point, triangles);
+  if(given_grid != nullptr)
+    internal::check_grid_frame(grid_points, triangles, internal::voxelize_settings(np, caller).resolution,
+                               given_grid->empty(), caller);
 
-  // Each vertex's centre: where it sits in the shape, which decides the bone that heats it.
-  std::vector<internal::Vec3> centres(n);
-  for(std::size_t v = 0; v < n; ++v)
-    centres[v] = internal::inscribed_ball_centre(cells.grid_point[v], normals[v], depth);
+  // The surface at the scale of the voxels: what follows is done per cluster of vertices
+  // (internal/skinning/surface_clusters.h), each vertex reading its cluster's weights at
+  // the end. A cluster stands at its vertices' centroid, with their area and the mean of
+  // their outward normals.
+  const internal::Surface_clusters clusters = internal::cluster_surface(grid_points, triangles);
+  const std::size_t m = clusters.number_of_clusters();
+  std::vector<internal::Vec3> normals;
+  std::vector<double> areas;
+  internal::outward_cluster_normals(grid_points, triangles, clusters, normals, areas);
+  const internal::Vertex_cells cells(solid, clusters.centroid);
+
+  // Each cluster's centre: where it sits in the shape, which decides the bone that heats it.
+  std::vector<internal::Vec3> centres(m);
+  for(std::size_t c = 0; c < m; ++c)
+    centres[c] = internal::inscribed_ball_centre(cells.grid_point[c], normals[c], depth);
   depth = Voxel_distance_field();
 
   // The bones in the grid, and the distance to the nearest one.
@@ -395,8 +437,8 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   internal::voxel_dijkstra(solid, all_seeds, nearest, reached, queue,
                            [](std::uint32_t, internal::Voxel_distance) { return true; });
 
-  // One bounded search per bone; each vertex finds the bone that heats it.
-  internal::Heat_source_finder finder(n);
+  // One bounded search per bone; each cluster finds the bone that heats it.
+  internal::Heat_source_finder finder(m);
   std::vector<internal::Voxel_distance> distance(solid.size(), internal::unreached);
   // A bone's search stops at a voxel where d_b + 1/2 >= s (d1 + 1/2) + 1 (in voxels).
   std::vector<internal::Voxel_distance> stop(solid.size());
@@ -405,7 +447,7 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
                   ? 0
                   : internal::Voxel_distance(std::min(4e9, (s * (nearest[u] * internal::voxels_per_unit + 0.5) + 0.5) /
                                                                internal::voxels_per_unit));
-  // The slots (cells with vertices) a search reached, each once per bone.
+  // The slots (cells with clusters) a search reached, each once per bone.
   std::vector<std::uint32_t> stamp(cells.number_of_slots(), 0), touched_slots;
   for(std::size_t b = 0; b < bones; ++b)
   {
@@ -422,11 +464,11 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
           touched_slots.push_back(slot);
         }
     for(std::uint32_t slot : touched_slots)
-      cells.read_slot(solid, slot, distance, [&](std::uint32_t v, double d) {
-        finder.add(v, std::uint32_t(b), d, [&] {
-          const internal::Vec3 offset = internal::offset_from_polyline(cells.grid_point[v], polylines[b]);
+      cells.read_slot(solid, slot, distance, [&](std::uint32_t c, double d) {
+        finder.add(c, std::uint32_t(b), d, [&] {
+          const internal::Vec3 offset = internal::offset_from_polyline(cells.grid_point[c], polylines[b]);
           const double straight = internal::norm3(offset);
-          const double cosine = straight > 0 ? internal::dot3(offset, normals[v]) / straight : 1.;
+          const double cosine = straight > 0 ? internal::dot3(offset, normals[c]) / straight : 1.;
           return std::array<double, 2>{straight, internal::Heat_source_finder::facing_distance(straight, cosine)};
         });
       });
@@ -435,37 +477,34 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   }
 
   internal::Heat_sources sources = finder.sources(
-      [&](std::size_t v, std::uint32_t b) { return internal::distance_to_polyline(centres[v], polylines[b]); });
-  for(std::size_t v = 0; v < n; ++v)
-    if(sources.bone[v] == internal::Heat_source_finder::none)
+      [&](std::size_t c, std::uint32_t b) { return internal::distance_to_polyline(centres[c], polylines[b]); });
+  for(std::size_t c = 0; c < m; ++c)
+    if(sources.bone[c] == internal::Heat_source_finder::none)
     {
-      // No bone in the vertex's part of the solid: the bone nearest in straight line.
-      sources.distance[v] = HUGE_VAL;
+      // No bone in the cluster's part of the solid: the bone nearest in straight line.
+      sources.distance[c] = HUGE_VAL;
       for(std::size_t b = 0; b < bones; ++b)
-        if(const double d = internal::distance_to_polyline(cells.grid_point[v], polylines[b]); d < sources.distance[v])
+        if(const double d = internal::distance_to_polyline(cells.grid_point[c], polylines[b]); d < sources.distance[c])
         {
-          sources.distance[v] = d;
-          sources.bone[v] = std::uint32_t(b);
+          sources.distance[c] = d;
+          sources.bone[c] = std::uint32_t(b);
         }
-      ++report.vertices_bound_in_straight_line;
+      report.vertices_bound_in_straight_line += clusters.size[c];
     }
 
-  std::vector<std::size_t> joint_of_bone(bones);
+  std::vector<std::uint32_t> joint_of_bone(bones);
   for(std::size_t b = 0; b < bones; ++b)
-    joint_of_bone[b] = std::size_t(source(numbered[b], skeleton));
+    joint_of_bone[b] = std::uint32_t(source(numbered[b], skeleton));
   // The diffusion keeps all the bones a vertex holds, so that a joint's share counts all its
   // bones before the sharpening; then the k largest are kept.
   std::vector<Bone_weights> weights(n);
-  report.heat_diffused = internal::diffuse_bone_heat(cells.grid_point, triangles, sources,
-                                                     bones, Bone_weights::capacity, weights);
+  report.heat_diffused = internal::diffuse_bone_heat(grid_points, clusters, areas, sources, bones,
+                                                     Bone_weights::capacity, weights);
   for(std::size_t v = 0; v < n; ++v)
   {
-    internal::sharpen(weights[v], sharpness, joint_of_bone);
-    internal::keep_largest_bones(weights[v], k);
-    internal::drop_small_weights(weights[v], minimum_weight);
+    internal::finish_weights(weights[v], sharpness, joint_of_bone, k, minimum_weight);
     if(weights[v].empty()) // the diffusion failed (it should not): the heating bone alone
-      weights[v].push_back(sources.bone[v], 1.f);
-    internal::normalise(weights[v]);
+      weights[v].push_back(sources.bone[clusters.cluster_of[v]], 1.f);
     put(weight_output, vertex_of[v], weights[v]);
     if constexpr(!is_default_parameter<NamedParameters, internal_np::bone_segmentation_map_t>::value)
     {

@@ -111,6 +111,9 @@ void read_soup_with_CGAL(const std::string& path, std::vector<Point>& points,
 ///
 /// \tparam PolygonMesh a model of `MutableFaceGraph` with a vertex point map
 ///         (`Surface_mesh`, `Polyhedron_3`, ...).
+/// \returns true when the mesh's vertex i is the file's point i for every point (the fast
+///          readers' direct path); false when the repair may have merged, split or dropped
+///          points, so that a vertex is found by its position.
 /// \throws std::runtime_error with a message "PATH: problem" when the file cannot be
 ///         opened, cannot be parsed (empty, garbage, wrong counts), has a non-finite
 ///         coordinate or a face that refers to a vertex that does not exist, or holds no
@@ -119,7 +122,7 @@ void read_soup_with_CGAL(const std::string& path, std::vector<Point>& points,
 /// \b Complexity: linear in the size of the file for a manifold mesh in a common form;
 /// O(n log n) otherwise (CGAL's readers and repair).
 template <typename PolygonMesh>
-void read_mesh(const std::string& path, PolygonMesh& mesh)
+bool read_mesh(const std::string& path, PolygonMesh& mesh)
 {
   using Point = typename boost::property_traits<
       typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>::value_type;
@@ -134,7 +137,7 @@ void read_mesh(const std::string& path, PolygonMesh& mesh)
     if(internal::is_oriented_manifold(soup, edges))
     {
       internal::build_mesh_from_manifold_soup(soup, edges, mesh, get(CGAL::vertex_point, mesh));
-      return;
+      return true;
     }
     points.reserve(soup.points.size());
     for(const auto& p : soup.points)
@@ -146,6 +149,7 @@ void read_mesh(const std::string& path, PolygonMesh& mesh)
   else
     internal::read_soup_with_CGAL(path, points, polygons);
   internal::polygon_soup_to_checked_mesh(path, points, polygons, mesh);
+  return false;
 }
 
 } // namespace IO

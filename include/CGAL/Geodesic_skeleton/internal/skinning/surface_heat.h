@@ -16,6 +16,7 @@
 // are in voxels, so the weights do not depend on the mesh's scale.
 
 #include <CGAL/Geodesic_skeleton/Bone_weights.h>
+#include <CGAL/Geodesic_skeleton/internal/skinning/surface_clusters.h>
 #include <CGAL/Geodesic_skeleton/internal/vec3.h>
 
 #include <boost/graph/graph_traits.hpp>
@@ -28,6 +29,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <type_traits>
@@ -213,42 +215,52 @@ void solve_in_rows(const Solver& solver, std::vector<double>& x, std::size_t wid
     std::copy_n(row(y, i), width, row(x, std::size_t(from_factor[Eigen::Index(i)])));
 }
 
-// Diffuses the bones' heat over the surface and keeps, per vertex, the `k` largest weights
-// (not yet normalised) of `bones` bones, with c = 1 (bone heat's). Distances below
-// `nearest_distance` voxels count as that (a vertex on a bone), areas below `smallest_area`
-// square voxels as that (a vertex of degenerate triangles only, or of none, still feels
-// its heat source). Returns false when the factorisation fails (it should not: the matrix is
-// positive definite), leaving `weights` untouched.
-inline bool diffuse_bone_heat(const std::vector<Vec3>& points,
-                              const std::vector<std::array<std::uint32_t, 3>>& triangles,
-                              const Heat_sources& sources, std::size_t bones, std::size_t k,
-                              std::vector<Bone_weights>& weights)
+// The weights of each cluster, bone by bone: bone `bone[i]` has `weight[i]` for i in
+// [first[c], first[c + 1]), by increasing bone.
+struct Cluster_weights
 {
-  constexpr double heat_constant = 1, nearest_distance = 0.1, smallest_area = 1e-6, negligible = 1e-4;
-  const std::size_t n = points.size();
-  std::vector<double> heat;
-  const Eigen::SparseMatrix<double> system =
-      screened_cotangent_laplacian(points, triangles, [&](std::size_t v, double area) {
-        const double d = std::max(sources.distance[v], nearest_distance);
-        return heat_constant * std::max(area, smallest_area) / (d * d);
-      }, heat);
+  std::vector<std::uint32_t> first, bone;
+  std::vector<double> weight;
+
+  double of(std::uint32_t c, std::uint32_t b) const
+  {
+    const auto begin = bone.begin() + first[c], end = bone.begin() + first[c + 1];
+    const auto it = std::lower_bound(begin, end, b);
+    return it != end && *it == b ? weight[std::size_t(it - bone.begin())] : 0.;
+  }
+};
+
+// Solves the screened heat system on the clustered surface (surface_clusters.h) for every
+// bone, the clusters heated by `sources` with the heat `heat`, keeping the weights above
+// `kept` of each cluster.
+inline bool solve_cluster_heat(const Surface_clusters& clusters, const std::vector<double>& heat,
+                               const Heat_sources& sources, std::size_t bones, double kept,
+                               Cluster_weights& out)
+{
+  const std::size_t n = clusters.number_of_clusters();
+  std::vector<double> ignored;
+  const Eigen::SparseMatrix<double> system = screened_cotangent_laplacian(
+      clusters.centroid, clusters.triangles, [&](std::size_t c, double) { return heat[c]; }, ignored);
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(system);
   if(solver.info() != Eigen::Success)
     return false;
-  // The vertices each bone heats, with its share of their heat; a bone that heats none has
-  // weight 0 everywhere.
+  // The clusters each bone heats, with its share of their heat.
   std::vector<std::vector<std::pair<std::uint32_t, double>>> heated(bones);
   std::array<std::uint32_t, Heat_sources::most_tied + 1> heating{};
-  for(std::size_t v = 0; v < n; ++v)
+  for(std::size_t c = 0; c < n; ++c)
   {
-    const std::size_t count = sources.heating_bones(v, heating);
+    const std::size_t count = sources.heating_bones(c, heating);
     for(std::size_t i = 0; i < count; ++i)
-      heated[heating[i]].emplace_back(std::uint32_t(v), 1. / double(count));
+      heated[heating[i]].emplace_back(std::uint32_t(c), heat[c] / double(count));
   }
-  // A few bones per solve: one pass over the factor serves them all.
+  // A few bones per solve: one pass over the factor serves them all. The weights kept are
+  // gathered as (cluster, bone) and weight, bones in increasing order within a cluster.
   constexpr std::size_t block = 8;
   std::vector<std::uint32_t> batch;
   std::vector<double> block_weights;
+  std::vector<std::uint32_t> count(n + 1, 0);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> entries;
+  std::vector<double> values;
   for(std::size_t first = 0; first < bones;)
   {
     batch.clear();
@@ -260,13 +272,125 @@ inline bool diffuse_bone_heat(const std::vector<Vec3>& points,
     const std::size_t width = batch.size();
     block_weights.assign(n * width, 0.);
     for(std::size_t column = 0; column < width; ++column)
-      for(const auto& [v, share] : heated[batch[column]])
-        block_weights[v * width + column] = share * heat[v];
+      for(const auto& [c, h] : heated[batch[column]])
+        block_weights[c * width + column] = h;
     solve_in_rows(solver, block_weights, width);
-    for(std::size_t v = 0; v < n; ++v)
+    for(std::size_t c = 0; c < n; ++c)
       for(std::size_t column = 0; column < width; ++column)
-        if(const double w = block_weights[v * width + column]; w > negligible)
-          keep_largest(weights[v], k, batch[column], float(w));
+        if(const double w = block_weights[c * width + column]; w > kept)
+        {
+          entries.emplace_back(std::uint32_t(c), batch[column]);
+          values.push_back(w);
+          ++count[c + 1];
+        }
+  }
+  // By cluster (a counting sort keeps the bones' increasing order).
+  for(std::size_t c = 0; c < n; ++c)
+    count[c + 1] += count[c];
+  out.first = count;
+  out.bone.resize(entries.size());
+  out.weight.resize(entries.size());
+  for(std::size_t i = 0; i < entries.size(); ++i)
+  {
+    const std::uint32_t slot = count[entries[i].first]++;
+    out.bone[slot] = entries[i].second;
+    out.weight[slot] = values[i];
+  }
+  return true;
+}
+
+// Diffuses the bones' heat over the surface and keeps, per vertex, the `k` largest weights
+// (not yet normalised) of `bones` bones, with c = 1 (bone heat's). The heat is solved on
+// the surface clustered by voxel (surface_clusters.h), each cluster heated by its source
+// (`sources`, per cluster) in proportion to its area `areas` (square voxels); each vertex
+// (`points`, grid coordinates) reads the weights of its cluster with their gradient there.
+// Distances below `nearest_distance` voxels count as that (a cluster on a bone), areas below
+// `smallest_area` square voxels as that (a vertex of degenerate triangles only, or of none,
+// still feels its heat source). Returns false when the factorisation fails (it should not:
+// the matrix is positive definite), leaving `weights` untouched.
+inline bool diffuse_bone_heat(const std::vector<Vec3>& points, const Surface_clusters& clusters,
+                              const std::vector<double>& areas, const Heat_sources& sources, std::size_t bones,
+                              std::size_t k, std::vector<Bone_weights>& weights)
+{
+  constexpr double heat_constant = 1, nearest_distance = 0.1, smallest_area = 1e-6, negligible = 1e-4;
+  const std::size_t n = points.size(), m = clusters.number_of_clusters();
+  std::vector<double> heat(m);
+  for(std::size_t c = 0; c < m; ++c)
+  {
+    const double d = std::max(sources.distance[c], nearest_distance);
+    heat[c] = heat_constant * std::max(areas[c], smallest_area) / (d * d);
+  }
+  Cluster_weights cluster_weights;
+  // A cluster keeps weights well under what a vertex keeps: its gradient may raise them.
+  if(!solve_cluster_heat(clusters, heat, sources, bones, 0.01 * negligible, cluster_weights))
+    return false;
+
+  // Each cluster's weights that reach `negligible` at one of its vertices, with their
+  // gradients (0 for a cluster of one vertex, its centroid); then each vertex reads those of
+  // its cluster, the vertices in order (the clusters' weights are few, the vertices many).
+  std::vector<double> reach(m, 0.); // the farthest vertex from the centroid
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    const std::uint32_t c = clusters.cluster_of[v];
+    reach[c] = std::max(reach[c], squared_distance3(points[v], clusters.centroid[c]));
+  }
+  struct Linear_weight
+  {
+    std::uint32_t bone;
+    double weight;
+    Vec3 gradient;
+  };
+  std::vector<std::uint32_t> first_weight(m + 1, 0);
+  std::vector<Linear_weight> linear_weights;
+  std::vector<Vec3> k_of_neighbour;
+  std::vector<double> lowest;
+  for(std::uint32_t c = 0; c < m; ++c)
+  {
+    k_of_neighbour.clear();
+    if(clusters.size[c] > 1)
+      gradient_weights(clusters, c, k_of_neighbour);
+    const double r = std::sqrt(reach[c]);
+    for(std::uint32_t i = cluster_weights.first[c]; i < cluster_weights.first[c + 1]; ++i)
+    {
+      const std::uint32_t b = cluster_weights.bone[i];
+      const double w = cluster_weights.weight[i];
+      Vec3 gradient{0, 0, 0};
+      for(std::uint32_t j = 0; j < k_of_neighbour.size(); ++j)
+      {
+        const double difference = cluster_weights.of(clusters.neighbours[clusters.first_neighbour[c] + j], b) - w;
+        for(std::size_t x = 0; x < 3; ++x)
+          gradient[x] += k_of_neighbour[j][x] * difference;
+      }
+      if(w + norm3(gradient) * r > negligible)
+        linear_weights.push_back({b, w, gradient});
+    }
+    // A weight that is under the k-th largest at every vertex of the cluster is never kept.
+    const auto begin = linear_weights.begin() + first_weight[c];
+    if(std::size_t(linear_weights.end() - begin) > k)
+    {
+      lowest.clear();
+      for(auto it = begin; it != linear_weights.end(); ++it)
+        lowest.push_back(it->weight - norm3(it->gradient) * r);
+      std::nth_element(lowest.begin(), lowest.begin() + std::ptrdiff_t(k - 1), lowest.end(), std::greater<double>());
+      const double kth_lowest = lowest[k - 1];
+      linear_weights.erase(std::remove_if(begin, linear_weights.end(),
+                                          [&](const Linear_weight& lw) {
+                                            return lw.weight + norm3(lw.gradient) * r < kth_lowest;
+                                          }),
+                           linear_weights.end());
+    }
+    first_weight[c + 1] = std::uint32_t(linear_weights.size());
+  }
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    const std::uint32_t c = clusters.cluster_of[v];
+    const Vec3 offset = sub(points[v], clusters.centroid[c]);
+    for(std::uint32_t i = first_weight[c]; i < first_weight[c + 1]; ++i)
+    {
+      const Linear_weight& lw = linear_weights[i];
+      if(const double at_v = std::min(1., lw.weight + dot3(lw.gradient, offset)); at_v > negligible)
+        keep_largest(weights[v], k, lw.bone, float(at_v));
+    }
   }
   return true;
 }

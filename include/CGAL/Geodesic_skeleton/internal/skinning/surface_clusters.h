@@ -1,0 +1,208 @@
+// Copyright (c) 2026 The Geodesic_skeleton authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_GEODESIC_SKELETON_INTERNAL_SKINNING_SURFACE_CLUSTERS_H
+#define CGAL_GEODESIC_SKELETON_INTERNAL_SKINNING_SURFACE_CLUSTERS_H
+
+// The surface of compute_skinning_weights() at the scale of the voxels, where the heat is
+// diffused. The bones' heat varies over a few voxels (it spreads as far as the bone is from
+// the surface), so a mesh finer than the grid adds unknowns and no detail: the vertices are
+// clustered by voxel, and the heat is solved on the clustered surface, whose size is the
+// grid's whatever the mesh's. A cluster is the vertices of a cell (half a voxel across)
+// joined by the mesh's edges inside that cell: two fingers, or a hand and a thigh, that pass
+// through one cell stay apart. A mesh coarser than the cells is its own clustering.
+//
+// The clustered surface has a vertex at each cluster's centroid and a triangle for each
+// triangle of the mesh whose corners fall in three clusters (vertex clustering, after
+// Rossignac and Borrel, 1993); each vertex of the mesh then reads the weights of its cluster
+// with their gradient there (a least-squares fit over the neighbouring clusters), so that the
+// weights vary smoothly across the clusters instead of in steps.
+
+#include <CGAL/Geodesic_skeleton/internal/vec3.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Geodesic_skeleton {
+namespace internal {
+
+struct Surface_clusters
+{
+  std::vector<std::uint32_t> cluster_of;                  // per vertex
+  std::vector<std::uint32_t> size;                        // per cluster: its vertices
+  std::vector<Vec3> centroid;                             // per cluster, in grid coordinates
+  std::vector<std::array<std::uint32_t, 3>> triangles;    // of clusters, each once
+  std::vector<std::uint32_t> first_neighbour, neighbours; // per cluster, those an edge joins it to
+
+  std::size_t number_of_clusters() const { return centroid.size(); }
+};
+
+// The clusters are half a voxel across: on artists' characters (benchmark/EXPERIMENTS.md)
+// a voxel's clusters lose detail where the heat turns within a voxel (fingers, ears); half a
+// voxel gives the weights of the unclustered mesh, at 4 times the clusters of a voxel.
+constexpr double cells_per_voxel = 2;
+
+// The unit cell of a point, as one integer; coordinates are at most 2^20 across, and points
+// a little outside the grid keep distinct keys.
+inline std::uint64_t cell_key_of(const Vec3& g)
+{
+  auto coordinate = [](double x) {
+    const double clamped = std::clamp(std::floor(x) + double(1 << 20), 0., double((1 << 21) - 1));
+    return std::uint64_t(clamped);
+  };
+  return coordinate(g[0]) | coordinate(g[1]) << 21 | coordinate(g[2]) << 42;
+}
+
+// The root of `x` in a union-find forest, halving the path.
+inline std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t x)
+{
+  while(parent[x] != x)
+  {
+    parent[x] = parent[parent[x]];
+    x = parent[x];
+  }
+  return x;
+}
+
+// Clusters the vertices `points` (grid coordinates) of `triangles` by cell and by the edges
+// inside each cell. Clusters are numbered by their first vertex. O(N + F log F) for the
+// sort of the triangles and edges that join clusters (a small share of a fine mesh's).
+inline Surface_clusters cluster_surface(const std::vector<Vec3>& points,
+                                        const std::vector<std::array<std::uint32_t, 3>>& triangles)
+{
+  const std::size_t n = points.size();
+  std::vector<std::uint64_t> key(n);
+  for(std::size_t v = 0; v < n; ++v)
+    key[v] = cell_key_of(Vec3{points[v][0] * cells_per_voxel, points[v][1] * cells_per_voxel,
+                              points[v][2] * cells_per_voxel});
+  std::vector<std::uint32_t> parent(n);
+  std::iota(parent.begin(), parent.end(), 0u);
+  for(const auto& t : triangles)
+    for(int i = 0; i < 3; ++i)
+    {
+      const std::uint32_t a = t[std::size_t(i)], b = t[std::size_t((i + 1) % 3)];
+      if(key[a] == key[b])
+        if(const std::uint32_t ra = find_root(parent, a), rb = find_root(parent, b); ra != rb)
+          parent[std::max(ra, rb)] = std::min(ra, rb); // the root is the cluster's first vertex
+    }
+  key = std::vector<std::uint64_t>();
+
+  Surface_clusters c;
+  c.cluster_of.resize(n);
+  for(std::uint32_t v = 0; v < n; ++v)
+  {
+    const std::uint32_t root = find_root(parent, v);
+    if(root == v)
+    {
+      c.cluster_of[v] = std::uint32_t(c.centroid.size());
+      c.centroid.push_back(Vec3{0, 0, 0});
+      c.size.push_back(0);
+    }
+    else
+      c.cluster_of[v] = c.cluster_of[root]; // root < v: numbered already
+    Vec3& sum = c.centroid[c.cluster_of[v]];
+    for(int i = 0; i < 3; ++i)
+      sum[std::size_t(i)] += points[v][std::size_t(i)];
+    ++c.size[c.cluster_of[v]];
+  }
+  for(std::size_t k = 0; k < c.centroid.size(); ++k)
+    for(double& x : c.centroid[k])
+      x /= double(c.size[k]);
+
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+  for(const auto& t : triangles)
+  {
+    std::array<std::uint32_t, 3> k{c.cluster_of[t[0]], c.cluster_of[t[1]], c.cluster_of[t[2]]};
+    for(int i = 0; i < 3; ++i)
+      if(const std::uint32_t a = k[std::size_t(i)], b = k[std::size_t((i + 1) % 3)]; a != b)
+        edges.emplace_back(std::min(a, b), std::max(a, b));
+    if(k[0] != k[1] && k[1] != k[2] && k[0] != k[2])
+    {
+      std::sort(k.begin(), k.end()); // the cotangent weights do not depend on the orientation
+      c.triangles.push_back(k);
+    }
+  }
+  std::sort(c.triangles.begin(), c.triangles.end());
+  c.triangles.erase(std::unique(c.triangles.begin(), c.triangles.end()), c.triangles.end());
+  // The neighbours of each cluster: the edges in both directions bucketed by cluster (a
+  // counting sort), then each bucket, a few dozen entries, sorted and made unique.
+  const std::size_t m = c.centroid.size();
+  std::vector<std::uint32_t> first(m + 1, 0);
+  for(const auto& [a, b] : edges)
+  {
+    ++first[a + 1];
+    ++first[b + 1];
+  }
+  for(std::size_t k = 0; k < m; ++k)
+    first[k + 1] += first[k];
+  std::vector<std::uint32_t> all(first.back());
+  {
+    std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
+    for(const auto& [a, b] : edges)
+    {
+      all[next[a]++] = b;
+      all[next[b]++] = a;
+    }
+  }
+  edges = decltype(edges)();
+  c.first_neighbour.assign(m + 1, 0);
+  c.neighbours.reserve(all.size() / 4);
+  for(std::size_t k = 0; k < m; ++k)
+  {
+    const auto begin = all.begin() + first[k], end = all.begin() + first[k + 1];
+    std::sort(begin, end);
+    c.neighbours.insert(c.neighbours.end(), begin, std::unique(begin, end));
+    c.first_neighbour[k + 1] = std::uint32_t(c.neighbours.size());
+  }
+  return c;
+}
+
+// The vectors k_q of cluster `p` that give the gradient of a function f known at the
+// centroids, sum over the neighbours q of k_q (f(q) - f(p)): the least-squares fit of
+// f(q) - f(p) = g . (c_q - c_p), regularised by a share of the spread so that clusters on a
+// line or a plane (a surface's are) get no gradient across it. Appended to `k` in the
+// order of p's neighbours.
+inline void gradient_weights(const Surface_clusters& c, std::uint32_t p, std::vector<Vec3>& k)
+{
+  constexpr double regularisation = 1e-2;
+  std::array<std::array<double, 3>, 3> m{};
+  for(std::uint32_t i = c.first_neighbour[p]; i < c.first_neighbour[p + 1]; ++i)
+  {
+    const Vec3 d = sub(c.centroid[c.neighbours[i]], c.centroid[p]);
+    for(int r = 0; r < 3; ++r)
+      for(int s = 0; s < 3; ++s)
+        m[std::size_t(r)][std::size_t(s)] += d[std::size_t(r)] * d[std::size_t(s)];
+  }
+  const double lambda = regularisation * (m[0][0] + m[1][1] + m[2][2]) + 1e-12;
+  for(int r = 0; r < 3; ++r)
+    m[std::size_t(r)][std::size_t(r)] += lambda;
+  // The inverse of the symmetric positive definite m, by its adjugate.
+  const double a = m[0][0], b = m[0][1], cc = m[0][2], d = m[1][1], e = m[1][2], f = m[2][2];
+  const double A = d * f - e * e, B = cc * e - b * f, C = b * e - cc * d;
+  const double determinant = a * A + b * B + cc * C;
+  const std::array<std::array<double, 3>, 3> inverse{{{A, B, C},
+                                                      {B, a * f - cc * cc, b * cc - a * e},
+                                                      {C, b * cc - a * e, a * d - b * b}}};
+  for(std::uint32_t i = c.first_neighbour[p]; i < c.first_neighbour[p + 1]; ++i)
+  {
+    const Vec3 dq = sub(c.centroid[c.neighbours[i]], c.centroid[p]);
+    Vec3 kq{0, 0, 0};
+    for(int r = 0; r < 3; ++r)
+      for(int s = 0; s < 3; ++s)
+        kq[std::size_t(r)] += inverse[std::size_t(r)][std::size_t(s)] * dq[std::size_t(s)] / determinant;
+    k.push_back(kq);
+  }
+}
+
+} // namespace internal
+} // namespace Geodesic_skeleton
+} // namespace CGAL
+
+#endif // CGAL_GEODESIC_SKELETON_INTERNAL_SKINNING_SURFACE_CLUSTERS_H
