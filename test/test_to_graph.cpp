@@ -152,6 +152,32 @@ BOOST_AUTO_TEST_CASE(the_graph_has_as_many_cycles_as_the_solid_and_no_triangle)
   }
 }
 
+BOOST_AUTO_TEST_CASE(an_unthinned_plate_gives_a_graph_without_triangle_or_cycle)
+{
+  // The voxels of a whole plate, not thinned: their triangles are one cluster of thousands
+  // (a thinning that leaves a patch of sheet makes such clusters). Its graph is a tree, and a
+  // plate with a hole through it has one cycle.
+  const Mesh plate = mesh_of(test::box(0., 0., 0., 4., 4., 0.4));
+  test::Soup frame_soup = test::box(0., 0., 0., 4., 1., 0.4);
+  test::append(frame_soup, test::box(0., 3., 0., 4., 4., 0.4), 0., 0., 0.);
+  test::append(frame_soup, test::box(0., 1., 0., 1., 3., 0.4), 0., 0., 0.);
+  test::append(frame_soup, test::box(3., 1., 0., 4., 3., 0.4), 0., 0., 0.);
+  const Mesh frame = mesh_of(frame_soup);
+  for(const auto& [mesh, cycles] : {std::make_pair(&plate, 0), std::make_pair(&frame, 1)})
+  {
+    gs::Sparse_voxel_set voxels;
+    gs::voxelize(*mesh, voxels, gs::parameters::resolution(48));
+    const gs::Voxel_distance_field distances = gs::distance_transform(voxels);
+    BOOST_TEST_REQUIRE(voxels.size() > 2000u);
+    typename test::Voxel_pipeline<Mesh, gs::Sparse_voxel_set>::Skeleton g;
+    gs::to_graph(voxels, distances, *mesh, g);
+    BOOST_TEST(num_vertices(g) == voxels.size());
+    BOOST_TEST(test::graph_components(g) == 1);
+    BOOST_TEST(count_triangles(g) == 0);
+    BOOST_TEST(test::graph_cycles(g) == cycles);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(a_rigid_motion_moves_the_skeleton_with_the_mesh)
 {
   const Mesh cow = demo_mesh("cow.off");

@@ -20,6 +20,7 @@
 #include <CGAL/Geodesic_skeleton/internal/skinning/skinning_fields.h>
 #include <CGAL/Geodesic_skeleton/internal/skinning/surface_clusters.h>
 #include <CGAL/Geodesic_skeleton/internal/skinning/surface_heat.h>
+#include <CGAL/Geodesic_skeleton/internal/voxelize/solid_voxels.h>
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 #include <CGAL/Geodesic_skeleton/voxelize.h>
@@ -110,10 +111,10 @@ inline void check_grid_frame(const std::vector<Vec3>& grid_points,
   for(std::size_t a = 0; a < 3 && matches; ++a)
   {
     // The box has an odd number n of voxels across the extent e, and one of margin: the
-    // lowest vertex at 1 + (n - e) / 2 (n is rounded up from e, so a rounding may take the next odd number).
+    // lowest vertex at 1 + (n - e) / 2 (e in these coordinates is rounded, so n may be the
+    // next odd number either way).
     const double e = hi[a] - lo[a];
-    int n = std::max(1, int(std::ceil(e - 1e-9)));
-    n += 1 - n % 2;
+    const int n = odd_voxel_count(e);
     matches = false;
     for(int candidate : {n - 2, n, n + 2})
       matches = matches || (candidate >= 1 && std::abs(lo[a] - (1 + 0.5 * (candidate - e))) <= tolerance);
@@ -411,7 +412,7 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   std::vector<internal::Vec3> normals;
   std::vector<double> areas;
   internal::outward_cluster_normals(grid_points, triangles, clusters, normals, areas);
-  const internal::Vertex_cells cells(solid, clusters.centroid);
+  const internal::Point_cells cells(solid, clusters.centroid);
 
   // Each cluster's centre: where it sits in the shape, which decides the bone that heats it.
   std::vector<internal::Vec3> centres(m);

@@ -139,7 +139,8 @@ namespace Geodesic_skeleton {
 ///
 /// \b Complexity: O(S + B + M + F) time for S skeleton voxels, B voxels in the field's box,
 ///    M mesh vertices and F faces (plus the grid cells that the faces cover, seen along
-///    each axis, and the rare triangle clusters, each of a few voxels).
+///    each axis), plus O(T log T) for the T triangles of the 26-adjacency graph (a few at
+///    each junction of a thinned skeleton; a patch of sheet or an unthinned set has many).
 template <typename VoxelSet, typename VoxelDistanceField, typename FaceGraph, typename Graph,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 void to_graph(const VoxelSet& skeleton, const VoxelDistanceField& distances,

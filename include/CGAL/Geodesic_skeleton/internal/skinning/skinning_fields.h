@@ -6,8 +6,8 @@
 
 // The machinery of compute_skinning_weights(): the solid voxels indexed compactly, the
 // bones rasterised into them, geodesic distance fields through them (Dijkstra, 26
-// neighbours, steps 1, sqrt 2, sqrt 3, in voxels), and the fields read at the mesh vertices
-// through the eight voxel centres around each vertex.
+// neighbours, steps 1, sqrt 2, sqrt 3, in voxels), and the fields read at the surface clusters
+// through the eight voxel centres around each cluster's centroid.
 
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
@@ -191,25 +191,25 @@ inline std::vector<std::uint32_t> rasterize_polyline(const Solid_voxels& solid, 
   return voxels;
 }
 
-// The mesh vertices grouped by the cell of voxel centres they lie in: the cell of base b
-// has the centres of the voxels b + {0, 1}^3 at its corners. A distance field known at the
-// voxel centres is read at a vertex as the least (value at a corner + distance from the
-// vertex to that corner), over the corners that have a value. Only the cells that hold
-// vertices are numbered (their slots), and each solid voxel knows the slots it is a corner
+// Points (the surface clusters' centroids) grouped by the cell of voxel centres they lie
+// in: the cell of base b has the centres of the voxels b + {0, 1}^3 at its corners. A distance field known at the
+// voxel centres is read at a point as the least (value at a corner + distance from the
+// point to that corner), over the corners that have a value. Only the cells that hold
+// points are numbered (their slots), and each solid voxel knows the slots it is a corner
 // of: nothing is as large as the grid's box, which is most of the cost for a small mesh.
-struct Vertex_cells
+struct Point_cells
 {
-  std::vector<Vec3> grid_point;          // each vertex in grid coordinates
+  std::vector<Vec3> grid_point;          // each point in grid coordinates
   std::vector<std::uint32_t> cell;       // per slot: the base cell (layout index), ascending
-  std::vector<std::uint32_t> first;      // per slot: its vertices in `vertices[first[s] .. first[s + 1])`
-  std::vector<std::uint32_t> vertices;   // vertex indices, grouped by slot
-  std::vector<std::uint32_t> outside;    // vertices whose cell is not inside the layout
+  std::vector<std::uint32_t> first;      // per slot: its points in `points[first[s] .. first[s + 1])`
+  std::vector<std::uint32_t> points;     // point indices, grouped by slot
+  std::vector<std::uint32_t> outside;    // points whose cell is not inside the layout
   std::vector<std::uint32_t> first_slot; // per solid voxel: its slots in `slots[first_slot[u] .. first_slot[u + 1])`
   std::vector<std::uint32_t> slots;
   std::array<std::ptrdiff_t, 8> corner_offsets{};
   std::array<Vec3, 8> corner_centre{};   // the corners' centres relative to the base voxel's corner
 
-  Vertex_cells(const Solid_voxels& solid, std::vector<Vec3> points_in_grid) : grid_point(std::move(points_in_grid))
+  Point_cells(const Solid_voxels& solid, std::vector<Vec3> points_in_grid) : grid_point(std::move(points_in_grid))
   {
     const Grid_layout& layout = solid.layout;
     for(int i = 0; i < 8; ++i)
@@ -218,7 +218,7 @@ struct Vertex_cells
       corner_offsets[std::size_t(i)] = dx + dy * layout.stride_y + dz * layout.stride_z;
       corner_centre[std::size_t(i)] = Vec3{dx + 0.5, dy + 0.5, dz + 0.5};
     }
-    // The vertices by base cell, in vertex order within a cell.
+    // The points by base cell, in index order within a cell.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> by_cell;
     by_cell.reserve(grid_point.size());
     for(std::size_t v = 0; v < grid_point.size(); ++v)
@@ -234,7 +234,7 @@ struct Vertex_cells
         outside.push_back(std::uint32_t(v));
     }
     std::sort(by_cell.begin(), by_cell.end());
-    vertices.reserve(by_cell.size());
+    points.reserve(by_cell.size());
     for(std::size_t i = 0; i < by_cell.size(); ++i)
     {
       if(i == 0 || by_cell[i].first != by_cell[i - 1].first)
@@ -242,7 +242,7 @@ struct Vertex_cells
         cell.push_back(by_cell[i].first);
         first.push_back(std::uint32_t(i));
       }
-      vertices.push_back(by_cell[i].second);
+      points.push_back(by_cell[i].second);
     }
     first.push_back(std::uint32_t(by_cell.size()));
     // The slots of each solid voxel.
@@ -257,7 +257,7 @@ struct Vertex_cells
 
   std::size_t number_of_slots() const { return cell.size(); }
 
-  // Calls f(vertex, value) for every vertex of slot `slot` at which the field `distance`
+  // Calls f(point, value) for every point of slot `slot` at which the field `distance`
   // (per solid voxel) has a value, that value in voxels.
   template <typename Function>
   void read_slot(const Solid_voxels& solid, std::uint32_t slot, const std::vector<Voxel_distance>& distance,
@@ -278,7 +278,7 @@ struct Vertex_cells
     const Voxel_key b = solid.layout.key(base);
     for(std::uint32_t k = first[slot]; k < first[slot + 1]; ++k)
     {
-      const std::uint32_t v = vertices[k];
+      const std::uint32_t v = points[k];
       const Vec3 local{grid_point[v][0] - b.x, grid_point[v][1] - b.y, grid_point[v][2] - b.z};
       double best = HUGE_VAL;
       for(std::size_t i = 0; i < 8; ++i)

@@ -5,15 +5,18 @@
 #define CGAL_GEODESIC_SKELETON_INTERNAL_SKINNING_SURFACE_HEAT_H
 
 // The diffusion step of compute_skinning_weights(): bone heat over the surface (after Baran
-// and Popovic, Automatic Rigging and Animation of 3D Characters, SIGGRAPH 2007). Each vertex
-// v is heated at distance d(v) by one bone, or by a few tied bones that share its heat
-// equally; with p_b(v) the share of bone b, the weight of bone b solves
+// and Popovic, Automatic Rigging and Animation of 3D Characters, SIGGRAPH 2007), solved on
+// the surface clustered in half-voxel cells (surface_clusters.h). Each cluster c is heated
+// at distance d(c) by one bone, or by a few tied bones that share its heat equally; with
+// p_b(c) the share of bone b, the weight of bone b solves
 //   (L + diag(c A / d^2)) w_b = diag(c A / d^2) p_b,
-// with L the cotangent Laplacian of the surface and A the vertex areas. The weights are in
-// [0, 1] and sum to 1 at every vertex (L has non-negative edge weights: the maximum
-// principle), and the matrix is positive definite whatever the mesh (every diagonal entry
-// has a positive heat term), so the solve never fails where bone heat does. All lengths
-// are in voxels, so the weights do not depend on the mesh's scale.
+// with L the cotangent Laplacian of the clustered surface and A the clusters' areas. The
+// weights are in [0, 1] and sum to 1 at every cluster (L has non-negative edge weights: the
+// maximum principle), and the matrix is positive definite whatever the mesh (every diagonal
+// entry has a positive heat term), so the solve never fails where bone heat does. Each
+// vertex reads its cluster's weights plus their gradient times its offset from the
+// cluster's centroid. All lengths are in voxels, so the weights do not depend on the mesh's
+// scale.
 
 #include <CGAL/Geodesic_skeleton/Bone_weights.h>
 #include <CGAL/Geodesic_skeleton/internal/skinning/surface_clusters.h>
@@ -121,20 +124,17 @@ inline double clamped_cotangent(const Vec3& apex, const Vec3& a, const Vec3& b)
 
 // The lower triangle of L + diag(heat) (all that a solver of symmetric systems reads): the
 // cotangent Laplacian (L(i, i) = the sum of the edge weights of i, L(i, j) = -w_ij) of
-// triangles given as vertex index triples over `points`, screened by the heat of each
-// vertex, `heat_of_area(v, A)` for its area A (a third of each incident triangle's), which
-// `heat` receives.
-template <typename HeatOfArea>
-Eigen::SparseMatrix<double> screened_cotangent_laplacian(const std::vector<Vec3>& points,
-                                                         const std::vector<std::array<std::uint32_t, 3>>& triangles,
-                                                         HeatOfArea heat_of_area, std::vector<double>& heat)
+// triangles given as vertex index triples over `points`, screened by `heat`, one value per
+// point.
+inline Eigen::SparseMatrix<double> screened_cotangent_laplacian(const std::vector<Vec3>& points,
+                                                                const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                                                                const std::vector<double>& heat)
 {
   const std::size_t n = points.size();
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(3 * triangles.size() + n);
-  std::vector<double> diagonal(n, 0.), area(n, 0.);
+  std::vector<double> diagonal(n, 0.);
   for(const auto& t : triangles)
-  {
     for(int corner = 0; corner < 3; ++corner)
     {
       const std::uint32_t apex = t[std::size_t(corner)], i = t[std::size_t((corner + 1) % 3)],
@@ -146,16 +146,8 @@ Eigen::SparseMatrix<double> screened_cotangent_laplacian(const std::vector<Vec3>
       diagonal[i] += w;
       diagonal[j] += w;
     }
-    const double third = norm3(cross3(sub(points[t[1]], points[t[0]]), sub(points[t[2]], points[t[0]]))) / 6;
-    for(std::uint32_t v : t)
-      area[v] += third;
-  }
-  heat.resize(n);
   for(std::size_t v = 0; v < n; ++v)
-  {
-    heat[v] = heat_of_area(v, area[v]);
     entries.emplace_back(Eigen::Index(v), Eigen::Index(v), diagonal[v] + heat[v]);
-  }
   const Eigen::Index size = Eigen::Index(n);
   Eigen::SparseMatrix<double> matrix(size, size);
   matrix.setFromTriplets(entries.begin(), entries.end());
@@ -238,9 +230,7 @@ inline bool solve_cluster_heat(const Surface_clusters& clusters, const std::vect
                                Cluster_weights& out)
 {
   const std::size_t n = clusters.number_of_clusters();
-  std::vector<double> ignored;
-  const Eigen::SparseMatrix<double> system = screened_cotangent_laplacian(
-      clusters.centroid, clusters.triangles, [&](std::size_t c, double) { return heat[c]; }, ignored);
+  const Eigen::SparseMatrix<double> system = screened_cotangent_laplacian(clusters.centroid, clusters.triangles, heat);
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(system);
   if(solver.info() != Eigen::Success)
     return false;
@@ -299,49 +289,39 @@ inline bool solve_cluster_heat(const Surface_clusters& clusters, const std::vect
   return true;
 }
 
-// Diffuses the bones' heat over the surface and keeps, per vertex, the `k` largest weights
-// (not yet normalised) of `bones` bones, with c = 1 (bone heat's). The heat is solved on
-// the surface clustered by voxel (surface_clusters.h), each cluster heated by its source
-// (`sources`, per cluster) in proportion to its area `areas` (square voxels); each vertex
-// (`points`, grid coordinates) reads the weights of its cluster with their gradient there.
-// Distances below `nearest_distance` voxels count as that (a cluster on a bone), areas below
-// `smallest_area` square voxels as that (a vertex of degenerate triangles only, or of none,
-// still feels its heat source). Returns false when the factorisation fails (it should not:
-// the matrix is positive definite), leaving `weights` untouched.
-inline bool diffuse_bone_heat(const std::vector<Vec3>& points, const Surface_clusters& clusters,
-                              const std::vector<double>& areas, const Heat_sources& sources, std::size_t bones,
-                              std::size_t k, std::vector<Bone_weights>& weights)
+// A cluster's weight of one bone as a linear function around its centroid.
+struct Linear_weight
 {
-  constexpr double heat_constant = 1, nearest_distance = 0.1, smallest_area = 1e-6, negligible = 1e-4;
-  const std::size_t n = points.size(), m = clusters.number_of_clusters();
-  std::vector<double> heat(m);
-  for(std::size_t c = 0; c < m; ++c)
-  {
-    const double d = std::max(sources.distance[c], nearest_distance);
-    heat[c] = heat_constant * std::max(areas[c], smallest_area) / (d * d);
-  }
-  Cluster_weights cluster_weights;
-  // A cluster keeps weights well under what a vertex keeps: its gradient may raise them.
-  if(!solve_cluster_heat(clusters, heat, sources, bones, 0.01 * negligible, cluster_weights))
-    return false;
+  std::uint32_t bone;
+  double weight;
+  Vec3 gradient;
+};
 
-  // Each cluster's weights that reach `negligible` at one of its vertices, with their
-  // gradients (0 for a cluster of one vertex, its centroid); then each vertex reads those of
-  // its cluster, the vertices in order (the clusters' weights are few, the vertices many).
+// The weights of each cluster as linear functions: those of cluster c are
+// `weights[first[c]]` to `weights[first[c + 1] - 1]`.
+struct Linear_cluster_weights
+{
+  std::vector<std::uint32_t> first;
+  std::vector<Linear_weight> weights;
+};
+
+// Each cluster's weights that reach `negligible` at one of its vertices (`points`), with
+// their least-squares gradients (0 for a cluster of one vertex, its centroid), but not those
+// under the `k`-th largest at every vertex of the cluster: they are never kept.
+inline Linear_cluster_weights linear_cluster_weights(const std::vector<Vec3>& points, const Surface_clusters& clusters,
+                                                     const Cluster_weights& cluster_weights, std::size_t k,
+                                                     double negligible)
+{
+  const std::size_t m = clusters.number_of_clusters();
   std::vector<double> reach(m, 0.); // the farthest vertex from the centroid
-  for(std::size_t v = 0; v < n; ++v)
+  for(std::size_t v = 0; v < points.size(); ++v)
   {
     const std::uint32_t c = clusters.cluster_of[v];
     reach[c] = std::max(reach[c], squared_distance3(points[v], clusters.centroid[c]));
   }
-  struct Linear_weight
-  {
-    std::uint32_t bone;
-    double weight;
-    Vec3 gradient;
-  };
-  std::vector<std::uint32_t> first_weight(m + 1, 0);
-  std::vector<Linear_weight> linear_weights;
+  Linear_cluster_weights out;
+  out.first.assign(m + 1, 0);
+  std::vector<Linear_weight>& linear = out.weights;
   std::vector<Vec3> k_of_neighbour;
   std::vector<double> lowest;
   for(std::uint32_t c = 0; c < m; ++c)
@@ -362,32 +342,59 @@ inline bool diffuse_bone_heat(const std::vector<Vec3>& points, const Surface_clu
           gradient[x] += k_of_neighbour[j][x] * difference;
       }
       if(w + norm3(gradient) * r > negligible)
-        linear_weights.push_back({b, w, gradient});
+        linear.push_back({b, w, gradient});
     }
-    // A weight that is under the k-th largest at every vertex of the cluster is never kept.
-    const auto begin = linear_weights.begin() + first_weight[c];
-    if(std::size_t(linear_weights.end() - begin) > k)
+    const auto begin = linear.begin() + out.first[c];
+    if(std::size_t(linear.end() - begin) > k)
     {
       lowest.clear();
-      for(auto it = begin; it != linear_weights.end(); ++it)
+      for(auto it = begin; it != linear.end(); ++it)
         lowest.push_back(it->weight - norm3(it->gradient) * r);
       std::nth_element(lowest.begin(), lowest.begin() + std::ptrdiff_t(k - 1), lowest.end(), std::greater<double>());
       const double kth_lowest = lowest[k - 1];
-      linear_weights.erase(std::remove_if(begin, linear_weights.end(),
-                                          [&](const Linear_weight& lw) {
-                                            return lw.weight + norm3(lw.gradient) * r < kth_lowest;
-                                          }),
-                           linear_weights.end());
+      linear.erase(std::remove_if(begin, linear.end(),
+                                  [&](const Linear_weight& lw) { return lw.weight + norm3(lw.gradient) * r < kth_lowest; }),
+                   linear.end());
     }
-    first_weight[c + 1] = std::uint32_t(linear_weights.size());
+    out.first[c + 1] = std::uint32_t(linear.size());
   }
-  for(std::size_t v = 0; v < n; ++v)
+  return out;
+}
+
+// Diffuses the bones' heat over the surface and keeps, per vertex, the `k` largest weights
+// (not yet normalised) of `bones` bones, with c = 1 (bone heat's). The heat is solved on
+// the surface clustered in half-voxel cells (surface_clusters.h), each cluster heated by its
+// source (`sources`, per cluster) in proportion to its area `areas` (square voxels); each
+// vertex (`points`, grid coordinates) reads the weights of its cluster with their gradient
+// there. Distances below `nearest_distance` voxels count as that (a cluster on a bone),
+// areas below `smallest_area` square voxels as that (a cluster of degenerate triangles only,
+// or of none, still feels its heat source). Returns false when the factorisation fails (it
+// should not: the matrix is positive definite), leaving `weights` untouched.
+inline bool diffuse_bone_heat(const std::vector<Vec3>& points, const Surface_clusters& clusters,
+                              const std::vector<double>& areas, const Heat_sources& sources, std::size_t bones,
+                              std::size_t k, std::vector<Bone_weights>& weights)
+{
+  constexpr double heat_constant = 1, nearest_distance = 0.1, smallest_area = 1e-6, negligible = 1e-4;
+  const std::size_t m = clusters.number_of_clusters();
+  std::vector<double> heat(m);
+  for(std::size_t c = 0; c < m; ++c)
+  {
+    const double d = std::max(sources.distance[c], nearest_distance);
+    heat[c] = heat_constant * std::max(areas[c], smallest_area) / (d * d);
+  }
+  Cluster_weights cluster_weights;
+  // A cluster keeps weights well under what a vertex keeps: its gradient may raise them.
+  if(!solve_cluster_heat(clusters, heat, sources, bones, 0.01 * negligible, cluster_weights))
+    return false;
+  // The clusters' weights are few, the vertices many: each vertex reads its cluster's.
+  const Linear_cluster_weights linear = linear_cluster_weights(points, clusters, cluster_weights, k, negligible);
+  for(std::size_t v = 0; v < points.size(); ++v)
   {
     const std::uint32_t c = clusters.cluster_of[v];
     const Vec3 offset = sub(points[v], clusters.centroid[c]);
-    for(std::uint32_t i = first_weight[c]; i < first_weight[c + 1]; ++i)
+    for(std::uint32_t i = linear.first[c]; i < linear.first[c + 1]; ++i)
     {
-      const Linear_weight& lw = linear_weights[i];
+      const Linear_weight& lw = linear.weights[i];
       if(const double at_v = std::min(1., lw.weight + dot3(lw.gradient, offset)); at_v > negligible)
         keep_largest(weights[v], k, lw.bone, float(at_v));
     }

@@ -44,6 +44,157 @@ inline std::size_t rank_mod2(std::vector<std::vector<std::uint64_t>> rows)
   return rank;
 }
 
+// Whether triangle `t` (three edge ids) contains edge `e`.
+inline bool has_edge(const std::array<int, 3>& t, int e) { return t[0] == e || t[1] == e || t[2] == e; }
+
+// The edges of the triangles `cluster`, in increasing order: the cluster's local numbering.
+inline std::vector<int> edges_of_cluster(const std::vector<std::array<int, 3>>& triangles,
+                                         const std::vector<int>& cluster)
+{
+  std::vector<int> local_edges;
+  for(int t : cluster)
+    for(int e : triangles[t])
+      local_edges.push_back(e);
+  std::sort(local_edges.begin(), local_edges.end());
+  local_edges.erase(std::unique(local_edges.begin(), local_edges.end()), local_edges.end());
+  return local_edges;
+}
+
+// Removes the edges of one cluster of edge-sharing triangles, the longest first, each only
+// when it lowers the rank of the remaining triangles' boundaries by exactly one, so that the
+// cycle rank of the graph is kept. Each check is an elimination over the cluster: O(E T^2)
+// for E edges and T triangles, for the small clusters of junctions and diagonal steps.
+template <typename SquaredLength>
+void reduce_cluster_exactly(const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& cluster,
+                            const SquaredLength& squared_length, std::vector<bool>& kept)
+{
+  const std::vector<int> local_edges = edges_of_cluster(triangles, cluster);
+  const std::size_t words = (local_edges.size() + 63) / 64;
+  auto local = [&](int e) {
+    return std::size_t(std::lower_bound(local_edges.begin(), local_edges.end(), e) - local_edges.begin());
+  };
+  auto boundaries = [&](const std::vector<int>& alive) {
+    std::vector<std::vector<std::uint64_t>> rows;
+    for(int t : alive)
+    {
+      std::vector<std::uint64_t> row(words, 0);
+      for(int e : triangles[t])
+      {
+        const std::size_t l = local(e);
+        row[l / 64] |= std::uint64_t(1) << (l % 64);
+      }
+      rows.push_back(std::move(row));
+    }
+    return rows;
+  };
+
+  std::vector<int> alive = cluster;
+  std::size_t rank = rank_mod2(boundaries(alive));
+  std::vector<int> candidates = local_edges;
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [&](int a, int b) { return squared_length(a) > squared_length(b); });
+  for(int e : candidates)
+  {
+    if(alive.empty())
+      break;
+    std::vector<int> without;
+    for(int t : alive)
+      if(!has_edge(triangles[t], e))
+        without.push_back(t);
+    if(without.size() == alive.size())
+      continue; // in no remaining triangle
+    const std::size_t r = rank_mod2(boundaries(without));
+    if(rank - r != 1)
+      continue;
+    kept[e] = false;
+    alive.swap(without);
+    rank = r;
+  }
+  // Not expected: break what is left by its longest edges (may change the cycle count).
+  for(int t : alive)
+  {
+    const auto& tri = triangles[t];
+    if(kept[tri[0]] && kept[tri[1]] && kept[tri[2]])
+      kept[*std::max_element(tri.begin(), tri.end(),
+                             [&](int a, int b) { return squared_length(a) < squared_length(b); })] = false;
+  }
+}
+
+// Removes the edges of a large cluster of triangles (a patch of sheet that thinning left,
+// thousands of triangles, where the exact reduction would take hours) by collapses: an edge
+// in one remaining triangle only, the longest first, goes with its triangle, which keeps
+// the cycle rank (the triangle's boundary is the only one holding that edge). When no such
+// edge is left and triangles remain (a closed patch), the longest edge of those goes, which
+// may change the cycle count. O(T log T) for T triangles.
+template <typename SquaredLength>
+void reduce_cluster_by_collapses(const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& cluster,
+                                 const SquaredLength& squared_length, std::vector<bool>& kept)
+{
+  const std::vector<int> local_edges = edges_of_cluster(triangles, cluster);
+  auto local = [&](int e) {
+    return std::size_t(std::lower_bound(local_edges.begin(), local_edges.end(), e) - local_edges.begin());
+  };
+  std::vector<std::vector<int>> triangles_of_edge(local_edges.size()); // positions in `cluster`
+  for(std::size_t i = 0; i < cluster.size(); ++i)
+    for(int e : triangles[cluster[i]])
+      triangles_of_edge[local(e)].push_back(int(i));
+  std::vector<int> alive_triangles_of_edge(local_edges.size());
+  for(std::size_t l = 0; l < local_edges.size(); ++l)
+    alive_triangles_of_edge[l] = int(triangles_of_edge[l].size());
+  std::vector<bool> alive(cluster.size(), true);
+
+  // Longest first, then by id, so that the result does not depend on the heap's order.
+  auto longer = [&](int a, int b) {
+    const auto la = squared_length(local_edges[a]), lb = squared_length(local_edges[b]);
+    return la != lb ? la < lb : a > b;
+  };
+  std::vector<int> free_edges;
+  auto push_free = [&](int l) {
+    free_edges.push_back(l);
+    std::push_heap(free_edges.begin(), free_edges.end(), longer);
+  };
+  auto remove_edge = [&](int l) {
+    kept[local_edges[l]] = false;
+    for(int i : triangles_of_edge[l])
+    {
+      if(!alive[i])
+        continue;
+      alive[i] = false;
+      for(int e : triangles[cluster[i]])
+      {
+        const int f = int(local(e));
+        if(--alive_triangles_of_edge[f] == 1 && kept[e])
+          push_free(f);
+      }
+    }
+  };
+  for(std::size_t l = 0; l < local_edges.size(); ++l)
+    if(alive_triangles_of_edge[l] == 1)
+      push_free(int(l));
+  std::vector<int> by_length(local_edges.size());
+  std::iota(by_length.begin(), by_length.end(), 0);
+  std::sort(by_length.begin(), by_length.end(), [&](int a, int b) { return longer(b, a); });
+  std::size_t next_longest = 0;
+  for(;;)
+  {
+    if(!free_edges.empty())
+    {
+      std::pop_heap(free_edges.begin(), free_edges.end(), longer);
+      const int l = free_edges.back();
+      free_edges.pop_back();
+      if(kept[local_edges[l]] && alive_triangles_of_edge[l] == 1)
+        remove_edge(l);
+      continue;
+    }
+    while(next_longest < by_length.size() &&
+          (!kept[local_edges[by_length[next_longest]]] || alive_triangles_of_edge[by_length[next_longest]] == 0))
+      ++next_longest;
+    if(next_longest == by_length.size())
+      break;
+    remove_edge(by_length[next_longest]);
+  }
+}
+
 // The edges of the 26-adjacency graph of a voxel skeleton make little triangles (and
 // tetrahedra) wherever three voxels are pairwise adjacent, at junctions and on diagonal
 // steps. Viewed as the clique complex of the graph, which has the homotopy type of the
@@ -54,13 +205,16 @@ inline std::size_t rank_mod2(std::vector<std::vector<std::uint64_t>> rows)
 // only when it kills exactly one dimension of triangle boundaries, until no triangle is
 // left: the graph then has no triangle and its cycle rank is b1, the true number of
 // tunnels. Triangles sharing no edge are independent, so the work is done per cluster of
-// edge-sharing triangles, which are tiny.
+// edge-sharing triangles, which are tiny at junctions; a cluster of more than
+// `largest_exactly_reduced_cluster` triangles (a patch of sheet) is reduced by collapses.
 //
 // `keys[v]` is the voxel of node v, `edges` are pairs of node indices (first < second).
 // Returns, per edge, whether it is kept.
 inline std::vector<bool> remove_junction_triangles(const std::vector<Voxel_key>& keys,
                                                    const std::vector<std::pair<int, int>>& edges)
 {
+  // Up to this size the exact reduction costs about as much as the rest of to_graph().
+  constexpr std::size_t largest_exactly_reduced_cluster = 64;
   const std::size_t n = keys.size();
   std::vector<bool> kept(edges.size(), true);
   std::vector<std::vector<std::pair<int, int>>> around(n); // (neighbour, edge)
@@ -116,69 +270,12 @@ inline std::vector<bool> remove_junction_triangles(const std::vector<Voxel_key>&
     const Voxel_key& q = keys[edges[e].second];
     return (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y) + (p.z - q.z) * (p.z - q.z);
   };
-
   for(const std::vector<int>& cluster : cluster_triangles)
   {
-    if(cluster.empty())
-      continue;
-    // Local numbering of the cluster's edges.
-    std::vector<int> local_edges;
-    for(int t : cluster)
-      for(int e : triangles[t])
-        local_edges.push_back(e);
-    std::sort(local_edges.begin(), local_edges.end());
-    local_edges.erase(std::unique(local_edges.begin(), local_edges.end()), local_edges.end());
-    const std::size_t words = (local_edges.size() + 63) / 64;
-    auto local = [&](int e) {
-      return std::size_t(std::lower_bound(local_edges.begin(), local_edges.end(), e) -
-                         local_edges.begin());
-    };
-    auto boundaries = [&](const std::vector<int>& alive) {
-      std::vector<std::vector<std::uint64_t>> rows;
-      for(int t : alive)
-      {
-        std::vector<std::uint64_t> row(words, 0);
-        for(int e : triangles[t])
-        {
-          const std::size_t l = local(e);
-          row[l / 64] |= std::uint64_t(1) << (l % 64);
-        }
-        rows.push_back(std::move(row));
-      }
-      return rows;
-    };
-
-    std::vector<int> alive = cluster;
-    std::size_t rank = rank_mod2(boundaries(alive));
-    std::vector<int> candidates = local_edges;
-    std::stable_sort(candidates.begin(), candidates.end(),
-                     [&](int a, int b) { return squared_length(a) > squared_length(b); });
-    for(int e : candidates)
-    {
-      if(alive.empty())
-        break;
-      std::vector<int> without;
-      for(int t : alive)
-        if(triangles[t][0] != e && triangles[t][1] != e && triangles[t][2] != e)
-          without.push_back(t);
-      if(without.size() == alive.size())
-        continue; // in no remaining triangle
-      const std::size_t r = rank_mod2(boundaries(without));
-      if(rank - r != 1)
-        continue;
-      kept[e] = false;
-      alive.swap(without);
-      rank = r;
-    }
-    // Not expected: break what is left by its longest edges (may change the cycle count).
-    for(int t : alive)
-    {
-      const auto& tri = triangles[t];
-      if(kept[tri[0]] && kept[tri[1]] && kept[tri[2]])
-        kept[*std::max_element(tri.begin(), tri.end(), [&](int a, int b) {
-          return squared_length(a) < squared_length(b);
-        })] = false;
-    }
+    if(cluster.size() > largest_exactly_reduced_cluster)
+      reduce_cluster_by_collapses(triangles, cluster, squared_length, kept);
+    else if(!cluster.empty())
+      reduce_cluster_exactly(triangles, cluster, squared_length, kept);
   }
   return kept;
 }

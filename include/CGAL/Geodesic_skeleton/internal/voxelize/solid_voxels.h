@@ -35,6 +35,14 @@ namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
 
+// The voxels of the grid along an axis across which the mesh extends `extent` voxels: the
+// odd number that covers the extent (see grid_frame()).
+inline int odd_voxel_count(double extent)
+{
+  const int n = (std::max)(1, int(std::ceil(extent - 1e-9)));
+  return n + 1 - n % 2;
+}
+
 // The frame and box of the grid: voxels of 1 / `resolution` of the longest principal extent
 // of the mesh, an odd number of them along each axis (the extent's, or one more), the mesh
 // centred in the box, and `margin` empty voxels all around. With an odd count the centre of
@@ -65,8 +73,7 @@ inline Voxel_frame grid_frame(const std::vector<Triangle3>& triangles, int resol
   for(int a = 0; a < 3; ++a)
   {
     const double extent = hi[a] - lo[a];
-    int n = (std::max)(1, int(std::ceil(extent / h - 1e-9)));
-    n += 1 - n % 2;
+    const int n = odd_voxel_count(extent / h);
     const double local_origin = lo[a] - 0.5 * (n * h - extent) - margin * h;
     for(int c = 0; c < 3; ++c)
       origin[c] += local_origin * pf.axes[a][c];
