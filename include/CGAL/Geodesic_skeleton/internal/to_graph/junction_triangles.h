@@ -128,19 +128,25 @@ void reduce_cluster_exactly(const std::vector<std::array<int, 3>>& triangles, co
 // may change the cycle count. O(T log T) for T triangles.
 template <typename SquaredLength>
 void reduce_cluster_by_collapses(const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& cluster,
-                                 const SquaredLength& squared_length, std::vector<bool>& kept)
+                                 const SquaredLength& squared_length, std::vector<int>& local_of_edge,
+                                 std::vector<bool>& kept)
 {
+  // `local_of_edge` is -1 for every edge on entry, and is left so.
   const std::vector<int> local_edges = edges_of_cluster(triangles, cluster);
-  auto local = [&](int e) {
-    return std::size_t(std::lower_bound(local_edges.begin(), local_edges.end(), e) - local_edges.begin());
-  };
-  std::vector<std::vector<int>> triangles_of_edge(local_edges.size()); // positions in `cluster`
+  for(std::size_t l = 0; l < local_edges.size(); ++l)
+    local_of_edge[std::size_t(local_edges[l])] = int(l);
+  auto local = [&](int e) { return std::size_t(local_of_edge[std::size_t(e)]); };
+  // The triangles of each edge (positions in `cluster`), in compressed rows.
+  std::vector<int> first_triangle(local_edges.size() + 1, 0), triangle_list(3 * cluster.size());
+  for(int t : cluster)
+    for(int e : triangles[t])
+      ++first_triangle[local(e) + 1];
+  for(std::size_t l = 0; l < local_edges.size(); ++l)
+    first_triangle[l + 1] += first_triangle[l];
+  std::vector<int> alive_triangles_of_edge(local_edges.size());
   for(std::size_t i = 0; i < cluster.size(); ++i)
     for(int e : triangles[cluster[i]])
-      triangles_of_edge[local(e)].push_back(int(i));
-  std::vector<int> alive_triangles_of_edge(local_edges.size());
-  for(std::size_t l = 0; l < local_edges.size(); ++l)
-    alive_triangles_of_edge[l] = int(triangles_of_edge[l].size());
+      triangle_list[std::size_t(first_triangle[local(e)] + alive_triangles_of_edge[local(e)]++)] = int(i);
   std::vector<bool> alive(cluster.size(), true);
 
   // Longest first, then by id, so that the result does not depend on the heap's order.
@@ -155,8 +161,9 @@ void reduce_cluster_by_collapses(const std::vector<std::array<int, 3>>& triangle
   };
   auto remove_edge = [&](int l) {
     kept[local_edges[l]] = false;
-    for(int i : triangles_of_edge[l])
+    for(int k = first_triangle[l]; k < first_triangle[l + 1]; ++k)
     {
+      const int i = triangle_list[std::size_t(k)];
       if(!alive[i])
         continue;
       alive[i] = false;
@@ -193,6 +200,8 @@ void reduce_cluster_by_collapses(const std::vector<std::array<int, 3>>& triangle
       break;
     remove_edge(by_length[next_longest]);
   }
+  for(int e : local_edges)
+    local_of_edge[std::size_t(e)] = -1;
 }
 
 // The edges of the 26-adjacency graph of a voxel skeleton make little triangles (and
@@ -270,10 +279,11 @@ inline std::vector<bool> remove_junction_triangles(const std::vector<Voxel_key>&
     const Voxel_key& q = keys[edges[e].second];
     return (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y) + (p.z - q.z) * (p.z - q.z);
   };
+  std::vector<int> local_of_edge(edges.size(), -1);
   for(const std::vector<int>& cluster : cluster_triangles)
   {
     if(cluster.size() > largest_exactly_reduced_cluster)
-      reduce_cluster_by_collapses(triangles, cluster, squared_length, kept);
+      reduce_cluster_by_collapses(triangles, cluster, squared_length, local_of_edge, kept);
     else if(!cluster.empty())
       reduce_cluster_exactly(triangles, cluster, squared_length, kept);
   }
