@@ -178,10 +178,12 @@ inline void finish_weights(Bone_weights& weights, double exponent, const std::ve
   double kept_total = 0;
   for(std::size_t i = 0; i < kept; ++i)
     if(i == 0 || sharpened[order[i]] >= minimum * total)
+    {
+      result.push_back(weights.bone[order[i]], sharpened[order[i]]);
       kept_total += sharpened[order[i]];
-  for(std::size_t i = 0; i < kept; ++i)
-    if(i == 0 || sharpened[order[i]] >= minimum * total)
-      result.push_back(weights.bone[order[i]], float(sharpened[order[i]] / kept_total));
+    }
+  for(std::size_t i = 0; i < result.size(); ++i)
+    result.weight[i] = float(result.weight[i] / kept_total);
   weights = result;
 }
 

@@ -6,8 +6,8 @@
 
 // The machinery of compute_skinning_weights(): the solid voxels indexed compactly, the
 // bones rasterised into them, geodesic distance fields through them (Dijkstra, 26
-// neighbours, steps 1, sqrt 2, sqrt 3, in voxels), and the fields read at the surface clusters
-// through the eight voxel centres around each cluster's centroid.
+// neighbours, steps 1, sqrt 2, sqrt 3, in voxels), and the fields read at the surface
+// clusters through the eight voxel centres around each cluster's centroid.
 
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
@@ -192,11 +192,12 @@ inline std::vector<std::uint32_t> rasterize_polyline(const Solid_voxels& solid, 
 }
 
 // Points (the surface clusters' centroids) grouped by the cell of voxel centres they lie
-// in: the cell of base b has the centres of the voxels b + {0, 1}^3 at its corners. A distance field known at the
-// voxel centres is read at a point as the least (value at a corner + distance from the
-// point to that corner), over the corners that have a value. Only the cells that hold
-// points are numbered (their slots), and each solid voxel knows the slots it is a corner
-// of: nothing is as large as the grid's box, which is most of the cost for a small mesh.
+// in: the cell of base b has the centres of the voxels b + {0, 1}^3 at its corners. A
+// distance field known at the voxel centres is read at a point as the least (value at a
+// corner + distance from the point to that corner), over the corners that have a value.
+// Only the cells that hold points are numbered (their slots), and each solid voxel knows
+// the slots it is a corner of: nothing is as large as the grid's box, which is most of the
+// cost for a small mesh.
 struct Point_cells
 {
   std::vector<Vec3> grid_point;          // each point in grid coordinates

@@ -7,8 +7,8 @@
 // The surface of compute_skinning_weights() at the scale of the voxels, where the heat is
 // diffused. The bones' heat varies over a few voxels (it spreads as far as the bone is from
 // the surface), so a mesh finer than the grid adds unknowns and no detail: the vertices are
-// clustered by voxel, and the heat is solved on the clustered surface, whose size is the
-// grid's whatever the mesh's. A cluster is the vertices of a cell (half a voxel across)
+// clustered in cells of the grid, and the heat is solved on the clustered surface, whose
+// size is the grid's whatever the mesh's. A cluster is the vertices of a cell (half a voxel across)
 // joined by the mesh's edges inside that cell: two fingers, or a hand and a thigh, that pass
 // through one cell stay apart. A mesh coarser than the cells is its own clustering.
 //

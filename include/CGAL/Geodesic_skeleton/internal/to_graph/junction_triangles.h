@@ -66,13 +66,11 @@ inline std::vector<int> edges_of_cluster(const std::vector<std::array<int, 3>>& 
 // for E edges and T triangles, for the small clusters of junctions and diagonal steps.
 template <typename SquaredLength>
 void reduce_cluster_exactly(const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& cluster,
+                            const std::vector<int>& local_edges, const std::vector<int>& local_of_edge,
                             const SquaredLength& squared_length, std::vector<bool>& kept)
 {
-  const std::vector<int> local_edges = edges_of_cluster(triangles, cluster);
   const std::size_t words = (local_edges.size() + 63) / 64;
-  auto local = [&](int e) {
-    return std::size_t(std::lower_bound(local_edges.begin(), local_edges.end(), e) - local_edges.begin());
-  };
+  auto local = [&](int e) { return std::size_t(local_of_edge[std::size_t(e)]); };
   auto boundaries = [&](const std::vector<int>& alive) {
     std::vector<std::vector<std::uint64_t>> rows;
     for(int t : alive)
@@ -121,20 +119,17 @@ void reduce_cluster_exactly(const std::vector<std::array<int, 3>>& triangles, co
 }
 
 // Removes the edges of a large cluster of triangles (a patch of sheet that thinning left,
-// thousands of triangles, where the exact reduction would take hours) by collapses: an edge
+// thousands of triangles, on which the exact reduction ran for more than ten minutes) by
+// collapses: an edge
 // in one remaining triangle only, the longest first, goes with its triangle, which keeps
 // the cycle rank (the triangle's boundary is the only one holding that edge). When no such
 // edge is left and triangles remain (a closed patch), the longest edge of those goes, which
 // may change the cycle count. O(T log T) for T triangles.
 template <typename SquaredLength>
 void reduce_cluster_by_collapses(const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& cluster,
-                                 const SquaredLength& squared_length, std::vector<int>& local_of_edge,
-                                 std::vector<bool>& kept)
+                                 const std::vector<int>& local_edges, const std::vector<int>& local_of_edge,
+                                 const SquaredLength& squared_length, std::vector<bool>& kept)
 {
-  // `local_of_edge` is -1 for every edge on entry, and is left so.
-  const std::vector<int> local_edges = edges_of_cluster(triangles, cluster);
-  for(std::size_t l = 0; l < local_edges.size(); ++l)
-    local_of_edge[std::size_t(local_edges[l])] = int(l);
   auto local = [&](int e) { return std::size_t(local_of_edge[std::size_t(e)]); };
   // The triangles of each edge (positions in `cluster`), in compressed rows.
   std::vector<int> first_triangle(local_edges.size() + 1, 0), triangle_list(3 * cluster.size());
@@ -200,8 +195,6 @@ void reduce_cluster_by_collapses(const std::vector<std::array<int, 3>>& triangle
       break;
     remove_edge(by_length[next_longest]);
   }
-  for(int e : local_edges)
-    local_of_edge[std::size_t(e)] = -1;
 }
 
 // The edges of the 26-adjacency graph of a voxel skeleton make little triangles (and
@@ -279,13 +272,22 @@ inline std::vector<bool> remove_junction_triangles(const std::vector<Voxel_key>&
     const Voxel_key& q = keys[edges[e].second];
     return (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y) + (p.z - q.z) * (p.z - q.z);
   };
+  // Each cluster numbers its edges 0, 1, ... in increasing order (local_of_edge, -1 outside
+  // the cluster at hand).
   std::vector<int> local_of_edge(edges.size(), -1);
   for(const std::vector<int>& cluster : cluster_triangles)
   {
+    if(cluster.empty())
+      continue;
+    const std::vector<int> local_edges = edges_of_cluster(triangles, cluster);
+    for(std::size_t l = 0; l < local_edges.size(); ++l)
+      local_of_edge[std::size_t(local_edges[l])] = int(l);
     if(cluster.size() > largest_exactly_reduced_cluster)
-      reduce_cluster_by_collapses(triangles, cluster, squared_length, local_of_edge, kept);
-    else if(!cluster.empty())
-      reduce_cluster_exactly(triangles, cluster, squared_length, kept);
+      reduce_cluster_by_collapses(triangles, cluster, local_edges, local_of_edge, squared_length, kept);
+    else
+      reduce_cluster_exactly(triangles, cluster, local_edges, local_of_edge, squared_length, kept);
+    for(int e : local_edges)
+      local_of_edge[std::size_t(e)] = -1;
   }
   return kept;
 }
