@@ -12,6 +12,7 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -90,7 +91,83 @@ gio::internal::Indexed_soup random_soup(std::mt19937& random)
   return soup;
 }
 
+// A fan of 17 to 40 triangles around point 0 (more than the table scans unsorted), closed
+// or not, with a few triangles dropped, flipped or repeated at random.
+gio::internal::Indexed_soup random_large_fan(std::mt19937& random)
+{
+  gio::internal::Indexed_soup soup;
+  const std::uint32_t ring = std::uniform_int_distribution<std::uint32_t>(17, 40)(random);
+  soup.points.assign(ring + 1, {0, 0, 0});
+  const bool closed = random() % 2 == 0;
+  for(std::uint32_t i = 0; i + (closed ? 0 : 1) < ring; ++i)
+  {
+    const std::uint32_t a = 1 + i, b = 1 + (i + 1) % ring;
+    const unsigned change = random() % 80;
+    if(change == 0) // dropped
+      continue;
+    soup.corners.insert(soup.corners.end(), {0u, change == 1 ? b : a, change == 1 ? a : b});
+    soup.close_polygon();
+    if(change == 2) // repeated
+    {
+      soup.corners.insert(soup.corners.end(), {0u, a, b});
+      soup.close_polygon();
+    }
+  }
+  return soup;
+}
+
+// Requires the fast manifold test to answer as CGAL's does on `trials` soups made by
+// `make_soup`; returns how many of them were manifold.
+template <typename MakeSoup>
+std::size_t count_manifold_soups_as_CGAL_does(MakeSoup make_soup, int trials)
+{
+  std::size_t manifold = 0;
+  for(int trial = 0; trial < trials; ++trial)
+  {
+    const gio::internal::Indexed_soup soup = make_soup();
+    std::vector<std::vector<std::size_t>> polygons;
+    for(std::size_t f = 0; f < soup.number_of_polygons(); ++f)
+      polygons.emplace_back(soup.corners.begin() + soup.offsets[f], soup.corners.begin() + soup.offsets[f + 1]);
+    const gio::internal::Directed_edge_table edges(soup);
+    const bool ours = gio::internal::is_oriented_manifold(soup, edges);
+    BOOST_TEST_REQUIRE(ours == CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons),
+                       "trial " << trial);
+    manifold += ours;
+  }
+  return manifold;
+}
+
 } // namespace
+
+BOOST_AUTO_TEST_CASE(a_cone_of_many_triangles_is_read_fast_into_the_mesh_of_CGALs_reader)
+{
+  // Apex and bottom centre each in 48 triangles; an open cone keeps its border too.
+  for(const bool closed : {true, false})
+  {
+    const std::string path = temporary_path(closed ? "cone.off" : "open_cone.off");
+    const int ring = 48;
+    std::ofstream out(path);
+    out << "OFF\n" << ring + 2 << " " << (closed ? 2 * ring : ring) << " 0\n0 0 1\n0 0 0\n";
+    for(int i = 0; i < ring; ++i)
+      out << std::cos(2 * CGAL_PI * i / ring) << " " << std::sin(2 * CGAL_PI * i / ring) << " 0\n";
+    for(int i = 0; i < ring; ++i)
+    {
+      out << "3 0 " << 2 + i << " " << 2 + (i + 1) % ring << "\n";
+      if(closed)
+        out << "3 1 " << 2 + (i + 1) % ring << " " << 2 + i << "\n";
+    }
+    out.close();
+    gio::internal::Indexed_soup soup;
+    BOOST_TEST_REQUIRE(gio::internal::read_soup_fast(path, "off", soup));
+    const gio::internal::Directed_edge_table edges(soup);
+    BOOST_TEST(gio::internal::is_oriented_manifold(soup, edges));
+    Mesh mesh;
+    BOOST_TEST(gio::read_mesh(path, mesh));
+    BOOST_TEST(CGAL::is_closed(mesh) == closed);
+    check_identical(mesh, read_with_CGAL(path), path);
+    std::filesystem::remove(path);
+  }
+}
 
 BOOST_AUTO_TEST_CASE(the_fast_path_gives_the_mesh_of_CGALs_readers_on_every_demo_mesh)
 {
@@ -192,25 +269,18 @@ BOOST_AUTO_TEST_CASE(a_keyword_glued_to_a_huge_count_is_refused_before_CGAL_read
   std::filesystem::remove(path);
 }
 
-BOOST_AUTO_TEST_CASE(the_manifold_test_agrees_with_CGALs_on_random_soups)
+BOOST_AUTO_TEST_CASE(the_manifold_test_agrees_with_CGALs_on_random_soups_and_large_fans)
 {
   std::mt19937 random(7);
-  std::size_t manifold = 0;
-  for(int trial = 0; trial < 20000; ++trial)
-  {
-    const gio::internal::Indexed_soup soup = random_soup(random);
-    std::vector<std::vector<std::size_t>> polygons;
-    for(std::size_t f = 0; f < soup.number_of_polygons(); ++f)
-      polygons.emplace_back(soup.corners.begin() + soup.offsets[f], soup.corners.begin() + soup.offsets[f + 1]);
-    const gio::internal::Directed_edge_table edges(soup);
-    const bool ours = gio::internal::is_oriented_manifold(soup, edges);
-    BOOST_TEST_REQUIRE(ours == CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons),
-                       "trial " << trial);
-    manifold += ours;
-  }
+  const std::size_t manifold = count_manifold_soups_as_CGAL_does([&] { return random_soup(random); }, 20000);
   // Both answers occur often enough for the agreement to mean something.
   BOOST_TEST(manifold > 1000u);
   BOOST_TEST(manifold < 19000u);
+  // Stars larger than the table scans unsorted.
+  const std::size_t manifold_fans =
+      count_manifold_soups_as_CGAL_does([&] { return random_large_fan(random); }, 2000);
+  BOOST_TEST(manifold_fans > 100u);
+  BOOST_TEST(manifold_fans < 1900u);
 }
 
 BOOST_AUTO_TEST_CASE(a_manifold_soup_builds_a_valid_polyhedron_too)
