@@ -116,37 +116,26 @@ Pruning_counts pruning_counts(const Mesh& mesh, int resolution)
   // resolution); a finer grid routes the pruned skeleton's branches.
   gs::voxelize(mesh, solid, gs::parameters::resolution((std::min)(resolution, gs::default_voxel_resolution)));
   const gs::Voxel_distance_field distances = gs::distance_transform(solid);
-  gs::Sheet_radii sheet_radii, slanted_sheet_radii;
-  gs::thin(solid, distances,
-           gs::parameters::combine(
-               gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(sheet_radii)),
-               gs::parameters::slanted_sheet_radius_map(
-                   boost::associative_property_map<gs::Sheet_radii>(slanted_sheet_radii))));
-  gs::Sparse_voxel_set skeleton;
-  skeleton.reset(solid.frame(), solid.bounding_box());
-  solid.for_each([&](const gs::Voxel_key& k) { skeleton.insert(k); });
-  c.thinned = skeleton.size();
-  gs::remove_small_pieces(skeleton, distances);
-  gs::cut_spurious_cycles(skeleton, mesh);
-  c.before = skeleton.size();
-  c.branched_before = gs::count_skeleton_points(skeleton).branched_connection;
+  gs::Voxel_skeleton skeleton;
+  gs::thin(solid, distances, skeleton);
+  c.thinned = skeleton.voxels.size();
+  gs::remove_small_pieces(skeleton.voxels, distances);
+  gs::cut_spurious_cycles(skeleton.voxels, mesh);
+  c.before = skeleton.voxels.size();
+  c.branched_before = gs::count_skeleton_points(skeleton.voxels).branched_connection;
 
-  // The radius maps that extract_control_skeleton() gives prune_skeleton().
-  const gs::Sheet_radii widest_sheet = gs::widest_sheet_radius_of_pieces(skeleton, slanted_sheet_radii);
-  const auto radius = gs::parameters::combine(gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(distances)),
-                                              gs::parameters::sheet_radius_map(gs::sheet_radius_in_voxels_map(sheet_radii)),
-                                              gs::parameters::piece_radius_map(gs::sheet_radius_in_voxels_map(widest_sheet)));
-  gs::Sparse_voxel_set algorithm_1 = skeleton;
-  const gs::Pruning_report report_1 =
-      gs::prune_skeleton(algorithm_1, gs::parameters::combine(radius, gs::parameters::spur_length_factor(0.0),
-                                                              gs::parameters::limb_protrusion_factor(0.0)));
-  c.algorithm_1_removed = c.before - algorithm_1.size();
+  // Algorithm 1 alone: the radii that extract_control_skeleton() prunes by, no snipping.
+  gs::Voxel_skeleton algorithm_1 = skeleton;
+  const gs::Pruning_report report_1 = gs::prune_skeleton(
+      algorithm_1, distances,
+      gs::parameters::combine(gs::parameters::spur_length_factor(0.0), gs::parameters::limb_protrusion_factor(0.0)));
+  c.algorithm_1_removed = c.before - algorithm_1.voxels.size();
   c.regions = report_1.branched_regions;
-  c.algorithm_1_branched = gs::count_skeleton_points(algorithm_1).branched_connection;
+  c.algorithm_1_branched = gs::count_skeleton_points(algorithm_1.voxels).branched_connection;
 
-  c.pruning = gs::prune_skeleton(skeleton, radius);
-  c.branched_after = gs::count_skeleton_points(skeleton).branched_connection;
-  c.pruned = skeleton.size();
+  c.pruning = gs::prune_skeleton(skeleton, distances);
+  c.branched_after = gs::count_skeleton_points(skeleton.voxels).branched_connection;
+  c.pruned = skeleton.voxels.size();
   return c;
 }
 

@@ -70,7 +70,7 @@ void run(const std::string& name, const Mesh& mesh, int repeats, int resolution)
   gs::Dense_voxel_grid solid;
   const double skeleton_with_solid_ms = median_ms(repeats, [&] {
     gs::extract_control_skeleton(mesh, control,
-                                 params::combine(params::resolution(resolution), params::voxelized_solid_output(&solid)));
+                                 params::combine(params::resolution(resolution), params::voxelized_solid(&solid)));
   });
   const double weights_given_solid_ms = median_ms(repeats, [&] {
     gs::compute_skinning_weights(mesh, control, weight_map,

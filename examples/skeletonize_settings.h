@@ -182,7 +182,7 @@ gs::Control_skeleton_report extract_control_skeleton(const Mesh& mesh, gs::Contr
       params::tip_joint_setback(s.tip_joint_setback), params::joint_spacing_factor(s.joint_spacing_factor),
       params::number_of_reeb_intervals(s.reeb_intervals), params::curve_skeleton_output(out.curve),
       params::thinned_skeleton_output(out.thinned), params::reeb_graph_output(out.reeb),
-      params::voxelized_solid_output(out.solid));
+      params::voxelized_solid(out.solid));
   // Without a smallest radius, the library's default (it depends on the mesh's extent).
   return s.smallest_radius
              ? gs::extract_control_skeleton(mesh, control, params::combine(params::smallest_radius(*s.smallest_radius), np))

@@ -14,15 +14,14 @@
 
 #include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
-#include <CGAL/Geodesic_skeleton/Skeleton_radius_in_voxels_map.h>
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
+#include <CGAL/Geodesic_skeleton/Voxel_skeleton.h>
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
 #include <CGAL/Geodesic_skeleton/route_skeleton_on_finer_grid.h>
 #include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/prune_skeleton.h>
 #include <CGAL/Geodesic_skeleton/reach_sheet_lobes.h>
-#include <CGAL/Geodesic_skeleton/sheet_half_widths.h>
 #include <CGAL/Geodesic_skeleton/skeleton_statistics.h>
 #include <CGAL/Geodesic_skeleton/thin.h>
 #include <CGAL/Geodesic_skeleton/to_graph.h>
@@ -68,7 +67,7 @@ int main(int argc, char* argv[])
     //! [voxel_medial_axis]
     // 1. The solid interior, on a grid aligned with the mesh's principal axes. Which
     //    branches the rig has is decided on the default grid (the level of detail); a finer
-    //    grid only places them more precisely (step 8).
+    //    grid only places them more precisely (step 7).
     const int pruning_resolution = (std::min)(resolution, GS::default_voxel_resolution);
     GS::Dense_voxel_grid solid;
     GS::voxelize(mesh, solid, GS::parameters::resolution(pruning_resolution));
@@ -79,53 +78,36 @@ int main(int argc, char* argv[])
     // 3. The grassfire: a one-voxel-thick curve skeleton with the solid's topology, and
     //    the sheet radius of its voxels (the half width of a thin sheet, measured in it),
     //    read at one level of distance and across close levels (a thick slanted plate).
-    GS::Sheet_radii sheet_radii, slanted_sheet_radii;
-    GS::thin(solid, distances,
-             GS::parameters::combine(
-                 GS::parameters::sheet_radius_map(boost::associative_property_map<GS::Sheet_radii>(sheet_radii)),
-                 GS::parameters::slanted_sheet_radius_map(
-                     boost::associative_property_map<GS::Sheet_radii>(slanted_sheet_radii))));
-    GS::Sparse_voxel_set skeleton;
-    skeleton.reset(solid.frame(), solid.bounding_box());
-    solid.for_each([&](const GS::Voxel_key& k) { skeleton.insert(k); });
-    const GS::Skeleton_point_counts thinned = GS::count_skeleton_points(skeleton);
+    GS::Voxel_skeleton skeleton;
+    GS::thin(solid, distances, skeleton);
+    const GS::Skeleton_point_counts thinned = GS::count_skeleton_points(skeleton.voxels);
 
     // 4. A thick plate that thinning burnt to a point or stubs (a starfish, a cushion) gets a
     //    path into each lobe of its medial sheet that the skeleton's balls leave out.
-    const GS::Sheet_lobes_report lobes = GS::reach_sheet_lobes(skeleton, distances);
+    const GS::Sheet_lobes_report lobes = GS::reach_sheet_lobes(skeleton.voxels, distances);
 
     // 5. The loops that parts closer than a voxel made, which the mesh has no handle for.
-    const std::size_t cut = GS::cut_spurious_cycles(skeleton, mesh);
+    const std::size_t cut = GS::cut_spurious_cycles(skeleton.voxels, mesh);
 
-    // 6. Each piece's twigs are judged against its widest sheet, read across close levels.
-    const GS::Sheet_radii widest_sheet = GS::widest_sheet_radius_of_pieces(skeleton, slanted_sheet_radii);
-
-    // 7. The paper's pruning; twigs are snipped by the MAT radius (in voxels), or in a
+    // 6. The paper's pruning; twigs are snipped by the MAT radius (in voxels), or in a
     //    thin sheet by its half width, and so are the branches inside the MAT balls of
-    //    the rest of the skeleton.
-    const GS::Pruning_report pruning = GS::prune_skeleton(
-        skeleton, GS::parameters::combine(GS::parameters::mat_radius_map(GS::mat_radius_in_voxels_map(distances)),
-                                          GS::parameters::sheet_radius_map(GS::sheet_radius_in_voxels_map(sheet_radii)),
-                                          GS::parameters::piece_radius_map(GS::sheet_radius_in_voxels_map(widest_sheet))));
+    //    the rest of the skeleton; each piece is judged against its widest sheet.
+    const GS::Pruning_report pruning = GS::prune_skeleton(skeleton, distances);
 
-    // 8. On a finer grid, the same branches routed through the middle of its solid, which
+    // 7. On a finer grid, the same branches routed through the middle of its solid, which
     //    keeps the links of the pruned skeleton where the finer grid separates parts.
     std::size_t along_coarser = 0;
     if(resolution > pruning_resolution)
     {
       GS::Dense_voxel_grid fine_solid;
       GS::voxelize(mesh, fine_solid, GS::parameters::resolution(resolution));
-      GS::add_skeleton_to_solid(skeleton, fine_solid);
+      GS::add_skeleton_to_solid(skeleton.voxels, fine_solid);
       GS::Voxel_distance_field fine_distances = GS::distance_transform(fine_solid);
-      GS::Sparse_voxel_set fine_skeleton;
-      fine_skeleton.reset(fine_solid.frame(), fine_solid.bounding_box());
-      GS::Coarser_voxel_map coarser_voxel;
-      along_coarser = GS::route_skeleton_on_finer_grid(skeleton, distances, fine_distances, fine_skeleton, coarser_voxel);
-      skeleton = std::move(fine_skeleton);
+      along_coarser = GS::route_skeleton_on_finer_grid(skeleton, distances, fine_distances);
       distances = std::move(fine_distances);
     }
 
-    // 9. The curve skeleton graph: points in the mesh's coordinates, radii, mesh vertices.
+    // 8. The curve skeleton graph: points in the mesh's coordinates, radii, mesh vertices.
     GS::Curve_skeleton<Point, vertex_descriptor> curve;
     GS::to_graph(skeleton, distances, mesh, curve);
     const GS::Skeleton_statistics shape = GS::skeleton_statistics(curve);

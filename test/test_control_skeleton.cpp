@@ -5,11 +5,14 @@
 #include <CGAL/Geodesic_skeleton/Control_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
+#include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
+#include <CGAL/Geodesic_skeleton/Voxel_skeleton.h>
 #include <CGAL/Geodesic_skeleton/chord_to_point_distance_accumulation.h>
 #include <CGAL/Geodesic_skeleton/extract_control_skeleton.h>
-#include <CGAL/Geodesic_skeleton/sheet_half_widths.h>
+#include <CGAL/Geodesic_skeleton/prune_skeleton.h>
 #include <CGAL/Geodesic_skeleton/smooth_skeleton.h>
 #include <CGAL/Geodesic_skeleton/split_into_bones.h>
+#include <CGAL/Geodesic_skeleton/to_graph.h>
 
 #include <Geodesic_skeleton_test/joints.h>
 #include <Geodesic_skeleton_test/shapes.h>
@@ -664,19 +667,15 @@ BOOST_AUTO_TEST_CASE(a_sheet_is_split_in_lengths_of_its_half_width)
   BOOST_TEST(num_edges(bones_of(with_sheet_half_width(0.05), paper_split)) == num_edges(fine));
 }
 
-// sheet_half_widths(): a sheet radius of r rounds is r - 2 voxels (the two rounds that any
-// level may burn in say nothing of a sheet), never less than 0; a voxel without one is 0.
+// A sheet radius of r rounds is a half width of r - 2 voxels (the two rounds that any level
+// may burn in say nothing of a sheet), never less than 0; a voxel without one is 0.
 BOOST_AUTO_TEST_CASE(sheet_half_widths_discount_the_rounds_of_any_level)
 {
-  Skeleton s = chain_skeleton(polyline({Point(0, 0, 0), Point(0, 0, 3)}, 1.0), 0.5);
-  BOOST_REQUIRE(num_vertices(s) == 4u);
-  for(std::size_t v = 0; v < 4; ++v)
-    s[v].voxel = gs::Voxel_key{0, 0, int(v)};
   const gs::Sheet_radii radii{{gs::Voxel_key{0, 0, 0}, 12.0}, {gs::Voxel_key{0, 0, 1}, 2.0}, {gs::Voxel_key{0, 0, 2}, 1.0}};
-  const std::vector<double> widths = gs::sheet_half_widths(s, radii, 0.5);
+  std::vector<double> widths;
+  for(int z = 0; z < 4; ++z)
+    widths.push_back(gs::internal::sheet_half_width(radii, gs::Voxel_key{0, 0, z}, 0.5));
   BOOST_TEST(widths == (std::vector<double>{5.0, 0.0, 0.0, 0.0}), boost::test_tools::per_element());
-  for(double bad : {0.0, -1.0, std::nan(""), HUGE_VAL})
-    BOOST_CHECK_THROW(gs::sheet_half_widths(s, radii, bad), std::invalid_argument);
 }
 
 // A wavy chain of radius 0.1, as a bar that pruning kept beside a plate of half width 1:
@@ -709,26 +708,30 @@ BOOST_AUTO_TEST_CASE(a_piece_radius_sets_the_level_of_detail_of_its_piece)
   BOOST_TEST(num_edges(bones_of(with_piece_radius(0.05, false))) == num_edges(own));
 }
 
-// widest_sheet_radius_of_pieces(): every voxel of a 26-connected piece gets the largest
-// sheet radius of the piece, a piece without one 0; radii of voxels outside the set count
-// for nothing.
+// prune_skeleton() of a Voxel_skeleton takes the widest sheet of each piece first: every
+// voxel of a 26-connected piece gets the largest sheet radius of the piece read across close
+// levels, a piece without one 0; radii of voxels outside the set count for nothing.
 BOOST_AUTO_TEST_CASE(every_voxel_of_a_piece_gets_its_widest_sheet)
 {
   using gs::Voxel_key;
-  gs::Sparse_voxel_set skeleton;
-  skeleton.reset(gs::Voxel_frame(), gs::Voxel_box{Voxel_key{-20, -20, -20}, Voxel_key{20, 20, 20}});
+  const gs::Voxel_box box{Voxel_key{-20, -20, -20}, Voxel_key{20, 20, 20}};
+  gs::Voxel_skeleton skeleton;
+  skeleton.voxels.reset(gs::Voxel_frame(), box);
   const std::vector<Voxel_key> plate{{0, 0, 0}, {1, 0, 0}, {2, 1, 1}, {3, 2, 1}}, bar{{10, 0, 0}, {11, 0, 0}};
   for(const Voxel_key& k : plate)
-    skeleton.insert(k);
+    skeleton.voxels.insert(k);
   for(const Voxel_key& k : bar)
-    skeleton.insert(k);
-  const gs::Sheet_radii radii{{Voxel_key{1, 0, 0}, 9.0}, {Voxel_key{3, 2, 1}, 4.0}, {Voxel_key{12, 0, 0}, 30.0}};
-  const gs::Sheet_radii widest = gs::widest_sheet_radius_of_pieces(skeleton, radii);
+    skeleton.voxels.insert(k);
+  skeleton.slanted_sheet_radii = {{Voxel_key{1, 0, 0}, 9.0}, {Voxel_key{3, 2, 1}, 4.0}, {Voxel_key{12, 0, 0}, 30.0}};
+  const gs::Voxel_distance_field distances(gs::Voxel_frame(), box, std::vector<std::uint32_t>(box.volume(), 1));
+  gs::prune_skeleton(skeleton, distances);
+  const gs::Sheet_radii& widest = skeleton.piece_sheet_radii;
   BOOST_TEST(widest.size() == plate.size() + bar.size());
   for(const Voxel_key& k : plate)
     BOOST_TEST(widest.at(k) == 9.0);
   for(const Voxel_key& k : bar)
     BOOST_TEST(widest.at(k) == 0.0);
+  BOOST_TEST(skeleton.voxels.size() == plate.size() + bar.size()); // two paths: nothing pruned
 }
 
 // Artists end a chain short of the tip (the wrist, the head joint, the last tail joint): a

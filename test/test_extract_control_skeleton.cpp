@@ -774,12 +774,9 @@ BOOST_AUTO_TEST_CASE(a_slanted_plate_is_judged_by_its_width_read_across_close_le
   gs::Dense_voxel_grid solid;
   gs::voxelize(mesh, solid);
   const gs::Voxel_distance_field distances = gs::distance_transform(solid);
-  gs::Sheet_radii at_one_level, across_levels;
-  gs::thin(solid, distances,
-           gs::parameters::combine(
-               gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(at_one_level)),
-               gs::parameters::slanted_sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(across_levels))));
-  BOOST_TEST(test::largest_sheet_radius(across_levels) > test::largest_sheet_radius(at_one_level));
+  gs::Voxel_skeleton skeleton;
+  gs::thin(solid, distances, skeleton);
+  BOOST_TEST(test::largest_sheet_radius(skeleton.slanted_sheet_radii) > test::largest_sheet_radius(skeleton.sheet_radii));
 
   check_joints_at_128_within_a_quarter_of_those_at_64(mesh);
 }
@@ -803,43 +800,23 @@ BOOST_AUTO_TEST_CASE(the_public_stages_composed_by_hand_give_the_same_skeleton)
       //! [composed_chain]
       gs::Dense_voxel_grid solid;
       gs::Voxelized_surface surface; // the mesh as voxelize() rasterised it, for the inside tests
-      gs::voxelize(mesh, solid, gs::parameters::voxelized_surface_output(&surface));
+      gs::voxelize(mesh, solid, gs::parameters::voxelized_surface(&surface));
       const auto with_surface = gs::parameters::voxelized_surface(&std::as_const(surface));
       const gs::Voxel_distance_field distances = gs::distance_transform(solid);
-      // A thin sheet's half width, for the pruning, read at each level of distance and across
-      // close levels (a thick plate slanted in the grid), for the pieces' level of detail.
-      gs::Sheet_radii sheet_radii, slanted_sheet_radii;
-      gs::thin(solid, distances,
-               gs::parameters::combine(
-                   gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(sheet_radii)),
-                   gs::parameters::slanted_sheet_radius_map(
-                       boost::associative_property_map<gs::Sheet_radii>(slanted_sheet_radii))));
-      gs::Sparse_voxel_set skeleton;
-      skeleton.reset(solid.frame(), solid.bounding_box());
-      solid.for_each([&](const gs::Voxel_key& k) { skeleton.insert(k); });
-      gs::reach_sheet_lobes(skeleton, distances); // a thick plate burnt to a point gets its lobes
-      gs::remove_small_pieces(skeleton, distances);
-      const std::size_t cut = gs::cut_spurious_cycles(skeleton, mesh, with_surface);
-      // The widest sheet of each piece, before pruning thins the sheets away.
-      const gs::Sheet_radii widest_sheet = gs::widest_sheet_radius_of_pieces(skeleton, slanted_sheet_radii);
-      gs::prune_skeleton(skeleton,
-                         gs::parameters::combine(gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(distances)),
-                                                 gs::parameters::sheet_radius_map(gs::sheet_radius_in_voxels_map(sheet_radii)),
-                                                 gs::parameters::piece_radius_map(gs::sheet_radius_in_voxels_map(widest_sheet))));
+      // The skeleton's voxels, with the sheet widths that thinning measured at each.
+      gs::Voxel_skeleton skeleton;
+      gs::thin(solid, distances, skeleton);
+      gs::reach_sheet_lobes(skeleton.voxels, distances); // a thick plate burnt to a point gets its lobes
+      gs::remove_small_pieces(skeleton.voxels, distances);
+      const std::size_t cut = gs::cut_spurious_cycles(skeleton.voxels, mesh, with_surface);
+      // Twigs judged by the MAT radius or a sheet's width, pieces by their widest sheet.
+      gs::prune_skeleton(skeleton, distances);
+      // The curve skeleton: its vertices carry the sheet widths too.
       Curve curve;
       gs::to_graph(skeleton, distances, mesh, curve, with_surface);
       gs::smooth_skeleton(curve);
       const std::vector<std::size_t> moved = gs::move_skeleton_inside(mesh, curve, with_surface);
-      // A thin sheet's chain is split in lengths of its width (0 where there is no sheet), and
-      // a piece at the level of detail of its widest sheet.
       const double voxel_size = solid.frame().voxel_size();
-      const std::vector<double> sheet_widths = gs::sheet_half_widths(curve, sheet_radii, voxel_size);
-      const std::vector<double> piece_widths = gs::sheet_half_widths(curve, widest_sheet, voxel_size);
-      for(std::size_t v = 0; v < num_vertices(curve); ++v)
-      {
-        curve[v].sheet_half_width = sheet_widths[v];
-        curve[v].piece_radius = piece_widths[v];
-      }
       // Chains end short of the tips, and long bones get joints a tenth of the shape apart.
       Control composed;
       gs::split_into_bones(
@@ -875,58 +852,29 @@ BOOST_AUTO_TEST_CASE(the_stages_composed_by_hand_on_a_finer_grid_give_the_same_s
   gs::Dense_voxel_grid solid;
   gs::Voxelized_surface surface;
   gs::voxelize(mesh, solid, gs::parameters::combine(gs::parameters::resolution(coarse_resolution),
-                                                    gs::parameters::voxelized_surface_output(&surface)));
+                                                    gs::parameters::voxelized_surface(&surface)));
   const auto with_surface = gs::parameters::voxelized_surface(&std::as_const(surface));
   const gs::Voxel_distance_field distances = gs::distance_transform(solid);
-  gs::Sheet_radii sheet_radii, slanted_sheet_radii;
-  gs::thin(solid, distances,
-           gs::parameters::combine(
-               gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(sheet_radii)),
-               gs::parameters::slanted_sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(slanted_sheet_radii))));
-  gs::Sparse_voxel_set skeleton;
-  skeleton.reset(solid.frame(), solid.bounding_box());
-  solid.for_each([&](const gs::Voxel_key& k) { skeleton.insert(k); });
-  gs::reach_sheet_lobes(skeleton, distances);
-  gs::remove_small_pieces(skeleton, distances);
-  gs::cut_spurious_cycles(skeleton, mesh, with_surface);
-  const gs::Sheet_radii widest_sheet = gs::widest_sheet_radius_of_pieces(skeleton, slanted_sheet_radii);
-  gs::prune_skeleton(skeleton,
-                     gs::parameters::combine(gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(distances)),
-                                             gs::parameters::sheet_radius_map(gs::sheet_radius_in_voxels_map(sheet_radii)),
-                                             gs::parameters::piece_radius_map(gs::sheet_radius_in_voxels_map(widest_sheet))));
+  gs::Voxel_skeleton skeleton;
+  gs::thin(solid, distances, skeleton);
+  gs::reach_sheet_lobes(skeleton.voxels, distances);
+  gs::remove_small_pieces(skeleton.voxels, distances);
+  gs::cut_spurious_cycles(skeleton.voxels, mesh, with_surface);
+  gs::prune_skeleton(skeleton, distances);
   // The finer grid: its solid keeps the pruned skeleton's links, and each branch is routed
   // through the middle of it.
   gs::Dense_voxel_grid fine_solid;
   gs::voxelize(mesh, fine_solid, gs::parameters::combine(gs::parameters::resolution(resolution),
-                                                         gs::parameters::voxelized_surface_output(&surface)));
-  gs::add_skeleton_to_solid(skeleton, fine_solid);
+                                                         gs::parameters::voxelized_surface(&surface)));
+  gs::add_skeleton_to_solid(skeleton.voxels, fine_solid);
   const gs::Voxel_distance_field fine_distances = gs::distance_transform(fine_solid);
-  gs::Sparse_voxel_set fine_skeleton;
-  fine_skeleton.reset(fine_solid.frame(), fine_solid.bounding_box());
-  gs::Coarser_voxel_map coarser_voxel;
-  gs::route_skeleton_on_finer_grid(skeleton, distances, fine_distances, fine_skeleton, coarser_voxel);
+  // Each routed voxel stands for a voxel of the pruned skeleton, whose sheet widths it reads.
+  gs::route_skeleton_on_finer_grid(skeleton, distances, fine_distances);
   Curve curve;
-  gs::to_graph(fine_skeleton, fine_distances, mesh, curve, with_surface);
+  gs::to_graph(skeleton, fine_distances, mesh, curve, with_surface);
   gs::smooth_skeleton(curve, gs::parameters::smoothing_window(gs::default_smoothing_window(resolution)));
   gs::move_skeleton_inside(mesh, curve, with_surface);
-  // The sheet widths measured on the grid of the level of detail, read through the voxels
-  // that the routed skeleton stands for.
-  gs::Sheet_radii fine_sheet_radii, fine_widest_sheet;
-  for(const auto& [fine, coarse] : coarser_voxel)
-  {
-    if(sheet_radii.count(coarse) != 0)
-      fine_sheet_radii[fine] = sheet_radii.at(coarse);
-    if(widest_sheet.count(coarse) != 0)
-      fine_widest_sheet[fine] = widest_sheet.at(coarse);
-  }
-  const double coarse_voxel_size = solid.frame().voxel_size(), voxel_size = fine_solid.frame().voxel_size();
-  const std::vector<double> sheet_widths = gs::sheet_half_widths(curve, fine_sheet_radii, coarse_voxel_size);
-  const std::vector<double> piece_widths = gs::sheet_half_widths(curve, fine_widest_sheet, coarse_voxel_size);
-  for(std::size_t v = 0; v < num_vertices(curve); ++v)
-  {
-    curve[v].sheet_half_width = sheet_widths[v];
-    curve[v].piece_radius = piece_widths[v];
-  }
+  const double voxel_size = fine_solid.frame().voxel_size();
   // Parts thinner than half a voxel of the default grid get the joints of parts that thick.
   // Chains end short of the tips, and long bones get joints a tenth of the shape apart.
   Control composed;
@@ -969,7 +917,7 @@ BOOST_AUTO_TEST_CASE(move_skeleton_inside_on_its_own)
 
   gs::Sparse_voxel_set voxels;
   gs::Voxelized_surface surface;
-  gs::voxelize(cow, voxels, gs::parameters::voxelized_surface_output(&surface));
+  gs::voxelize(cow, voxels, gs::parameters::voxelized_surface(&surface));
   BOOST_TEST(surface.number_of_triangles() == num_faces(cow));
   // The surface's own inside test agrees with the winding-number oracle on the moved
   // points (all inside) and on the same points pushed out again.

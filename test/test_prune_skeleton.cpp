@@ -2,7 +2,7 @@
 // CGAL/Geodesic_skeleton/prune_skeleton.h (the paper's Algorithm 1 and the snipping of
 // spurious branches), on hand-made voxel skeletons and on both VoxelSet models.
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
-#include <CGAL/Geodesic_skeleton/Skeleton_radius_in_voxels_map.h>
+#include <CGAL/Geodesic_skeleton/Voxel_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
 #include <CGAL/Geodesic_skeleton/prune_skeleton.h>
@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <set>
 #include <unordered_map>
@@ -361,42 +362,42 @@ BOOST_AUTO_TEST_CASE(the_level_of_detail_is_relative_to_each_piece)
   BOOST_TEST(!skeleton.contains(big.bump_end));
 }
 
-// piece_radius_map: the unit of a piece's level of detail (limb_protrusion_factor) is at
-// least what the map gives, as extract_control_skeleton() gives the widest sheet of a piece
-// read across close levels. A trunk along x (radius 6, 40 voxels on each side of the
-// junction) and a limb along +y (20 voxels, radius 2), whose balls reach 16 voxels out of
-// the trunk's: it stays at the piece's own largest radius (0.75 x 6 = 4.5 voxels) and at 20
-// (15 voxels), and is snipped at 25 (18.75), the trunk's halves staying (40 voxels out).
-BOOST_AUTO_TEST_CASE(a_piece_radius_map_sets_the_level_of_detail_of_the_piece)
+// The widest sheet of a piece (Voxel_skeleton::slanted_sheet_radii, read over the piece):
+// the unit of a piece's level of detail (limb_protrusion_factor) is at least that. A trunk
+// along x (MAT radius about 6, 40 voxels on each side of the junction) and a limb along +y
+// (20 voxels, radius about 2), whose balls reach 16 voxels out of the trunk's: it stays at
+// the piece's own largest radius (0.75 x 6 = 4.5 voxels) and with a sheet of 20 (15
+// voxels), and is snipped with one of 25 (18.75), the trunk's halves staying (40 voxels out).
+BOOST_AUTO_TEST_CASE(the_widest_sheet_of_a_piece_sets_its_level_of_detail)
 {
-  using VoxelSet = gs::Sparse_voxel_set;
   std::vector<Voxel_key> voxels;
-  std::unordered_map<Voxel_key, double, gs::Voxel_key_hash> radius;
+  std::unordered_map<Voxel_key, std::uint32_t, gs::Voxel_key_hash> squared_distance;
   for(int x = -40; x <= 40; ++x)
-  {
-    voxels.push_back(Voxel_key{x, 0, 0});
-    radius[voxels.back()] = 6.0;
-  }
+    squared_distance[voxels.emplace_back(Voxel_key{x, 0, 0})] = 42; // radius sqrt(42) - 1/2, about 6
   for(int y = 1; y <= 20; ++y)
-  {
-    voxels.push_back(Voxel_key{0, y, 0});
-    radius[voxels.back()] = 2.0;
-  }
+    squared_distance[voxels.emplace_back(Voxel_key{0, y, 0})] = 6; // about 2
+  const gs::Voxel_box box{Voxel_key{-41, -1, -1}, Voxel_key{42, 22, 2}};
+  std::vector<std::uint32_t> values(box.volume(), 0);
+  for(const auto& [k, d2] : squared_distance)
+    values[std::size_t(((k.z - box.min.z) * (box.max.y - box.min.y) + (k.y - box.min.y)) * (box.max.x - box.min.x) +
+                       (k.x - box.min.x))] = d2;
+  const gs::Voxel_distance_field field(gs::Voxel_frame(), box, std::move(values));
   const Voxel_key limb_end{0, 20, 0};
-  const auto mat_radius = gs::parameters::mat_radius_map(boost::make_assoc_property_map(radius));
-  const auto pruned_with_piece_radius = [&](double piece_radius) {
-    VoxelSet skeleton = voxel_set<VoxelSet>(voxels);
-    gs::prune_skeleton(skeleton, gs::parameters::combine(gs::parameters::piece_radius_map(
-                                                             CGAL::Constant_property_map<Voxel_key, double>(piece_radius)),
-                                                         mat_radius));
-    return skeleton;
+  const auto pruned_with_sheet = [&](double widest_sheet) {
+    gs::Voxel_skeleton skeleton;
+    skeleton.voxels = voxel_set<gs::Sparse_voxel_set>(voxels);
+    skeleton.slanted_sheet_radii[Voxel_key{5, 0, 0}] = widest_sheet;
+    gs::prune_skeleton(skeleton, field);
+    for(const Voxel_key& k : voxels) // taken before pruning, for the whole piece
+      BOOST_TEST(skeleton.piece_sheet_radii.at(k) == widest_sheet);
+    return skeleton.voxels;
   };
-  VoxelSet without_map = voxel_set<VoxelSet>(voxels);
-  gs::prune_skeleton(without_map, mat_radius);
-  BOOST_TEST(without_map.contains(limb_end));
-  BOOST_TEST((contents(pruned_with_piece_radius(0)) == contents(without_map)));
-  BOOST_TEST(pruned_with_piece_radius(20).contains(limb_end));
-  const VoxelSet wide = pruned_with_piece_radius(25);
+  gs::Sparse_voxel_set by_mat_radius = voxel_set<gs::Sparse_voxel_set>(voxels);
+  gs::prune_skeleton(by_mat_radius, gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(field)));
+  BOOST_TEST(by_mat_radius.contains(limb_end));
+  BOOST_TEST((contents(pruned_with_sheet(0)) == contents(by_mat_radius)));
+  BOOST_TEST(pruned_with_sheet(20).contains(limb_end));
+  const gs::Sparse_voxel_set wide = pruned_with_sheet(25);
   BOOST_TEST(!wide.contains(limb_end));
   BOOST_TEST(wide.contains(Voxel_key{-40, 0, 0}));
   BOOST_TEST(wide.contains(Voxel_key{40, 0, 0}));
@@ -511,22 +512,17 @@ struct Pruned_mesh_skeleton
     gs::voxelize(mesh, voxels, gs::parameters::combine(gs::parameters::keep_surface_voxels(keep_surface_voxels),
                                                        gs::parameters::resolution(resolution)));
     const gs::Voxel_distance_field field = gs::distance_transform(voxels);
-    gs::Sheet_radii sheet_radii;
+    gs::Voxel_skeleton skeleton;
     // As extract_control_skeleton() thins: the parts thin at the default resolution are thin.
-    gs::thin(voxels, field,
-             gs::parameters::combine(
-                 gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(sheet_radii)),
-                 gs::parameters::thin_part_radius(gs::default_thin_part_radius(resolution))));
-    thinned_points = gs::count_skeleton_points(voxels);
+    gs::thin(voxels, field, skeleton, gs::parameters::thin_part_radius(gs::default_thin_part_radius(resolution)));
+    thinned_points = gs::count_skeleton_points(skeleton.voxels);
     gs::Curve_skeleton<Mesh::Point, Mesh::Vertex_index> graph;
-    gs::to_graph(voxels, field, mesh, graph);
+    gs::to_graph(skeleton.voxels, field, mesh, graph);
     thinned = gs::skeleton_statistics(graph);
     // As extract_control_skeleton() prunes: by the MAT radius, or a sheet's half width.
-    gs::prune_skeleton(voxels,
-                       gs::parameters::combine(gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(field)),
-                                               gs::parameters::sheet_radius_map(gs::sheet_radius_in_voxels_map(sheet_radii))));
-    pruned_points = gs::count_skeleton_points(voxels);
-    gs::to_graph(voxels, field, mesh, graph);
+    gs::prune_skeleton(skeleton, field);
+    pruned_points = gs::count_skeleton_points(skeleton.voxels);
+    gs::to_graph(skeleton.voxels, field, mesh, graph);
     pruned = gs::skeleton_statistics(graph);
   }
 };
@@ -559,17 +555,15 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(a_thin_sheet_is_pruned_by_its_width, VoxelSet, Vox
             plate.insert(Voxel_key{x, y, z});
         }
     const gs::Voxel_distance_field distances = gs::distance_transform(plate);
-    gs::Sheet_radii sheet_radii;
-    gs::thin(plate, distances,
-             gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(sheet_radii)));
+    gs::Voxel_skeleton by_width;
+    gs::thin(plate, distances, by_width);
     VoxelSet by_thickness = plate;
     gs::prune_skeleton(by_thickness, gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(distances)));
-    gs::prune_skeleton(plate,
-                       gs::parameters::combine(gs::parameters::mat_radius_map(gs::mat_radius_in_voxels_map(distances)),
-                                               gs::parameters::sheet_radius_map(gs::sheet_radius_in_voxels_map(sheet_radii))));
+    gs::prune_skeleton(by_width, distances);
     BOOST_TEST(gs::count_skeleton_points(by_thickness).end > 10u, "thickness " << thickness);
-    BOOST_TEST(gs::count_skeleton_points(plate).end <= 3u, "thickness " << thickness);
-    BOOST_TEST(gs::count_skeleton_points(plate).total() >= std::size_t(length - width), "thickness " << thickness);
+    BOOST_TEST(gs::count_skeleton_points(by_width.voxels).end <= 3u, "thickness " << thickness);
+    BOOST_TEST(gs::count_skeleton_points(by_width.voxels).total() >= std::size_t(length - width),
+               "thickness " << thickness);
   }
 }
 
@@ -663,22 +657,6 @@ BOOST_AUTO_TEST_CASE(absurd_parameters_give_clear_exceptions)
   BOOST_CHECK_THROW(gs::prune_skeleton(skeleton, gs::parameters::mat_radius_map(
                                                      CGAL::Constant_property_map<Voxel_key, double>(-2.0))),
                     std::invalid_argument);
-  BOOST_CHECK_THROW(gs::prune_skeleton(skeleton, gs::parameters::sheet_radius_map(
-                                                     CGAL::Constant_property_map<Voxel_key, double>(std::nan("")))),
-                    std::invalid_argument);
-  BOOST_CHECK_THROW(gs::prune_skeleton(skeleton, gs::parameters::piece_radius_map(
-                                                     CGAL::Constant_property_map<Voxel_key, double>(-1.0))),
-                    std::invalid_argument);
-  BOOST_CHECK_THROW(gs::prune_skeleton(skeleton, gs::parameters::piece_radius_map(
-                                                     CGAL::Constant_property_map<Voxel_key, double>(HUGE_VAL))),
-                    std::invalid_argument);
-  // A sheet radius map that refers to no radii reads 0 everywhere: the MAT radius judges.
-  BOOST_TEST(get(gs::Sheet_radius_in_voxels_map{}, Voxel_key{1, 2, 3}) == 0.);
-  gs::Sparse_voxel_set without_sheets = voxel_set<gs::Sparse_voxel_set>(thick_junction_with_three_arms());
-  gs::Sparse_voxel_set by_mat_radius = without_sheets;
-  gs::prune_skeleton(without_sheets, gs::parameters::sheet_radius_map(gs::Sheet_radius_in_voxels_map{}));
-  gs::prune_skeleton(by_mat_radius);
-  BOOST_TEST((contents(without_sheets) == contents(by_mat_radius)));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

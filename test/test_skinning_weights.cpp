@@ -333,7 +333,7 @@ BOOST_AUTO_TEST_CASE(the_chains_solid_gives_the_same_weights)
   const Mesh mesh = shapes::mesh_of<Mesh>(shapes::cylinder(1, 20, 24, 46, true));
   Control skeleton;
   gs::Dense_voxel_grid solid;
-  gs::extract_control_skeleton(mesh, skeleton, params::combine(params::resolution(48), params::voxelized_solid_output(&solid)));
+  gs::extract_control_skeleton(mesh, skeleton, params::combine(params::resolution(48), params::voxelized_solid(&solid)));
   BOOST_TEST_REQUIRE(num_edges(skeleton) > 0u);
   BOOST_TEST_REQUIRE(!solid.empty());
   const auto expected = weights_of(mesh, skeleton, params::resolution(48));

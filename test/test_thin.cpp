@@ -1,6 +1,6 @@
 // Specification of CGAL/Geodesic_skeleton/thin.h (and of its simple-point test).
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
-#include <CGAL/Geodesic_skeleton/Skeleton_radius_in_voxels_map.h>
+#include <CGAL/Geodesic_skeleton/Voxel_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/internal/thin/simple_point.h>
@@ -322,7 +322,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(a_bar_thins_to_its_axis, VoxelSet, Voxel_set_model
   BOOST_TEST(test::components_26(s) == 1);
 }
 
-// The sheet radius (thin()'s sheet_radius_map): in a sheet one voxel thick, where the MAT
+// The sheet radius (Voxel_skeleton::sheet_radii): in a sheet one voxel thick, where the MAT
 // radius is half a voxel everywhere, the kept middle line gets the sheet's half width, the
 // number of rounds its level burnt from the rim; in a bar, whose levels are shells, nothing.
 BOOST_AUTO_TEST_CASE_TEMPLATE(thin_measures_the_half_width_of_a_thin_sheet, VoxelSet, Voxel_set_models)
@@ -331,11 +331,12 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(thin_measures_the_half_width_of_a_thin_sheet, Voxe
   VoxelSet sheet = voxels_where<VoxelSet>(gs::Voxel_box{gs::Voxel_key{0, 0, 0}, gs::Voxel_key{length, width, 1}},
                                           [](int, int, int) { return true; });
   const gs::Voxel_distance_field sheet_distances = gs::distance_transform(sheet);
-  gs::Sheet_radii radii;
-  gs::thin(sheet, sheet_distances,
-           gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(radii)));
+  gs::Voxel_skeleton skeleton;
+  gs::thin(sheet, sheet_distances, skeleton);
+  const gs::Sheet_radii& radii = skeleton.sheet_radii;
   BOOST_TEST(radii.size() == sheet.size()); // one radius per voxel kept
-  const auto radius = gs::skeleton_radius_in_voxels_map(sheet_distances, radii);
+  BOOST_TEST((test::keys_of(skeleton.voxels) == test::keys_of(sheet)));
+  BOOST_TEST(skeleton.radius_voxel_size == sheet.frame().voxel_size());
   int middle = 0;
   sheet.for_each([&](const gs::Voxel_key& k) {
     BOOST_TEST(get(gs::mat_radius_in_voxels_map(sheet_distances), k) < 1.);
@@ -345,20 +346,17 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(thin_measures_the_half_width_of_a_thin_sheet, Voxe
     BOOST_TEST(std::abs(k.y - (width - 1) / 2.) <= 1.);
     BOOST_TEST(radii.at(k) >= width / 2. - 2.);
     BOOST_TEST(radii.at(k) <= width / 2. + 1.);
-    BOOST_TEST(get(radius, k) == radii.at(k)); // the larger of the two radii
   });
   BOOST_TEST(middle == 20); // one voxel per column
 
   VoxelSet bar = voxels_where<VoxelSet>(gs::Voxel_box{gs::Voxel_key{0, -7, -7}, gs::Voxel_key{40, 8, 8}},
                                         [](int, int y, int z) { return y * y + z * z <= 25; });
   const gs::Voxel_distance_field bar_distances = gs::distance_transform(bar);
-  radii.clear();
-  gs::thin(bar, bar_distances, gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(radii)));
+  gs::thin(bar, bar_distances, skeleton);
   BOOST_TEST(radii.size() == bar.size());
   bar.for_each([&](const gs::Voxel_key& k) {
     BOOST_TEST(radii.at(k) <= 1.);
-    BOOST_TEST(get(gs::skeleton_radius_in_voxels_map(bar_distances, radii), k) ==
-               get(gs::mat_radius_in_voxels_map(bar_distances), k));
+    BOOST_TEST(radii.at(k) <= get(gs::mat_radius_in_voxels_map(bar_distances), k)); // the MAT radius judges
   });
 }
 
@@ -390,11 +388,9 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(a_thicker_thin_sheet_burns_from_its_rim, VoxelSet,
       BOOST_TEST_REQUIRE(deepest > 2u); // thicker than a thin part of the default radius
       BOOST_TEST_REQUIRE(deepest <= 8u);
 
-      gs::Sheet_radii radii;
-      gs::thin(set, distances,
-               gs::parameters::combine(
-                   gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(radii)),
-                   gs::parameters::thin_part_radius(gs::default_thin_part_radius(128))));
+      gs::Voxel_skeleton skeleton;
+      gs::thin(set, distances, skeleton, gs::parameters::thin_part_radius(gs::default_thin_part_radius(128)));
+      const gs::Sheet_radii& radii = skeleton.sheet_radii;
       int middle = 0;
       set.for_each([&](const gs::Voxel_key& k) {
         if(k.x < 20 || k.x >= 40)
@@ -412,7 +408,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(a_thicker_thin_sheet_burns_from_its_rim, VoxelSet,
 // degrees off the z axis, turned 10 degrees about it), thinned with the default thin-part
 // radius: its middle lies on levels less than half a voxel apart, side by side in strips,
 // and each level's rounds measure a strip (at most 4 voxels here). The sheet radius read
-// across close levels (slanted_sheet_radius_map) measures the plate, its half width; it is
+// across close levels (Voxel_skeleton::slanted_sheet_radii) measures the plate, its half width; it is
 // never below the one read at one level, and equals it in a sheet parallel to the grid.
 BOOST_AUTO_TEST_CASE_TEMPLATE(the_sheet_radius_across_close_levels_measures_a_slanted_plate, VoxelSet,
                               Voxel_set_models)
@@ -431,15 +427,11 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(the_sheet_radius_across_close_levels_measures_a_sl
   };
   const auto radii_of = [](VoxelSet set) {
     const gs::Voxel_distance_field distances = gs::distance_transform(set);
-    std::pair<gs::Sheet_radii, gs::Sheet_radii> at_one_level_and_across;
-    gs::thin(set, distances,
-             gs::parameters::combine(gs::parameters::sheet_radius_map(boost::associative_property_map<gs::Sheet_radii>(
-                                         at_one_level_and_across.first)),
-                                     gs::parameters::slanted_sheet_radius_map(
-                                         boost::associative_property_map<gs::Sheet_radii>(at_one_level_and_across.second))));
-    BOOST_TEST(at_one_level_and_across.first.size() == set.size());
-    BOOST_TEST(at_one_level_and_across.second.size() == set.size());
-    return at_one_level_and_across;
+    gs::Voxel_skeleton skeleton;
+    gs::thin(set, distances, skeleton);
+    BOOST_TEST(skeleton.sheet_radii.size() == set.size());
+    BOOST_TEST(skeleton.slanted_sheet_radii.size() == set.size());
+    return std::make_pair(skeleton.sheet_radii, skeleton.slanted_sheet_radii);
   };
 
   const auto [at_one_level, across_levels] =
@@ -511,17 +503,8 @@ BOOST_AUTO_TEST_CASE(the_sheet_radii_cost_memory_only_when_asked_for)
   BOOST_TEST((test::keys_of(limited) == test::keys_of(unlimited)));
 
   gs::Sparse_voxel_set with_radii = bar;
-  gs::Sheet_radii radii;
-  BOOST_CHECK_THROW(gs::thin(with_radii, distances,
-                             gs::parameters::combine(gs::parameters::memory_limit(between),
-                                                     gs::parameters::sheet_radius_map(
-                                                         boost::associative_property_map<gs::Sheet_radii>(radii)))),
-                    std::length_error);
-  gs::Sparse_voxel_set with_slanted_radii = bar;
-  BOOST_CHECK_THROW(gs::thin(with_slanted_radii, distances,
-                             gs::parameters::combine(gs::parameters::memory_limit(between),
-                                                     gs::parameters::slanted_sheet_radius_map(
-                                                         boost::associative_property_map<gs::Sheet_radii>(radii)))),
+  gs::Voxel_skeleton skeleton;
+  BOOST_CHECK_THROW(gs::thin(with_radii, distances, skeleton, gs::parameters::memory_limit(between)),
                     std::length_error);
 }
 

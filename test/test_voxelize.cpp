@@ -1,6 +1,6 @@
 // Specification of CGAL/Geodesic_skeleton/voxelize.h.
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
-#include <CGAL/Geodesic_skeleton/Skeleton_radius_in_voxels_map.h>
+#include <CGAL/Geodesic_skeleton/Voxel_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/prune_skeleton.h>
@@ -188,7 +188,7 @@ BOOST_AUTO_TEST_CASE(the_rim_of_a_sheet_is_not_closed_unless_every_component_is_
   const auto fan_triangles = [](const Mesh& mesh) {
     gs::Sparse_voxel_set voxels;
     gs::Voxelized_surface surface;
-    gs::voxelize(mesh, voxels, gs::parameters::voxelized_surface_output(&surface));
+    gs::voxelize(mesh, voxels, gs::parameters::voxelized_surface(&surface));
     std::size_t face_triangles = 0;
     for(auto f : faces(mesh))
       face_triangles += degree(f, mesh) - 2;

@@ -44,12 +44,12 @@ struct Curve_skeleton_vertex
   Voxel_key voxel;
   /// The half width of the thin sheet (a wing, a fin, a cape) it runs through, in world
   /// units, 0 where it runs through none: `split_into_bones()` measures its lengths in the
-  /// larger of `radius` and this (`extract_control_skeleton()` sets it: `sheet_half_widths()`).
+  /// larger of `radius` and this (`to_graph()` of a `Voxel_skeleton` sets it).
   double sheet_half_width = 0;
   /// A radius of its connected piece measured otherwise, in world units: `split_into_bones()`
   /// takes the largest radius of the piece (its level of detail) as at least the largest of
-  /// these over the piece (`extract_control_skeleton()` sets the half width of the piece's
-  /// widest sheet before pruning: `widest_sheet_radius_of_pieces()`).
+  /// these over the piece (`to_graph()` of a `Voxel_skeleton` sets the half width of the
+  /// piece's widest sheet before pruning, `Voxel_skeleton::piece_sheet_radii`).
   double piece_radius = 0;
 };
 

@@ -45,7 +45,7 @@ enum class Surface_side
 /// winding number of the surface, counted along lines parallel to the grid's axes.
 ///
 /// `voxelize()` fills one with the triangles it rasterised (named parameter
-/// `voxelized_surface_output`), and `to_graph()`, `cut_spurious_cycles()` and
+/// `voxelized_surface`), and `to_graph()`, `cut_spurious_cycles()` and
 /// `move_skeleton_inside()` take it (named parameter `voxelized_surface`), so that a chain
 /// of stages reads and transforms the mesh once; without it each of them builds its own
 /// from the mesh. It holds a copy of the triangles: about as large as the mesh.

@@ -295,9 +295,9 @@ inline void finish_weights(Bone_weights& weights, double exponent, const std::ve
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{voxelized_solid}
 ///     \cgalParamDescription{the solid that `voxelize()` gives this mesh with the parameters
-///                           above, such as `extract_control_skeleton()`'s
-///                           `voxelized_solid_output`: it is used instead of voxelizing the
-///                           mesh again (package parameter)}
+///                           above, such as `extract_control_skeleton()` writes through the
+///                           same name: it is used instead of voxelizing the mesh again
+///                           (package parameter)}
 ///     \cgalParamType{a pointer to a `const Dense_voxel_grid`}
 ///     \cgalParamDefault{none: the mesh is voxelized}
 ///     \cgalParamExtra{A grid whose frame is not the one `voxelize()` gives this mesh at

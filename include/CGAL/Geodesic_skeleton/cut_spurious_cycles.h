@@ -81,7 +81,7 @@ namespace Geodesic_skeleton {
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{voxelized_surface}
 ///     \cgalParamDescription{the mesh as `voxelize()` rasterised it (its
-///                           `voxelized_surface_output`), for the inside tests (package
+///                           `voxelized_surface`), for the inside tests (package
 ///                           parameter)}
 ///     \cgalParamType{`const Voxelized_surface*`}
 ///     \cgalParamDefault{built from `mesh`, `vertex_point_map` and `fill_holes` when

@@ -33,12 +33,12 @@ namespace Geodesic_skeleton {
 ///
 /// On the grid of the level of detail: `voxelize()` (the solid interior, on a grid aligned
 /// with the principal axes), `distance_transform()` (the MAT radius), `thin()` (grassfire, a
-/// one-voxel-thick curve skeleton, with the sheet radius of its voxels),
+/// one-voxel-thick `Voxel_skeleton`, with the sheet radii of its voxels),
 /// `reach_sheet_lobes()` (a branch into each lobe of a thick plate that thinning burnt to a
 /// point), `remove_small_pieces()` (loose eyes, teeth), `cut_spurious_cycles()` (loops the mesh has
 /// no handle for), `prune_skeleton()` (the paper's Algorithm 1 and the snipping of spurious
 /// branches, judged by the MAT radius or a thin sheet's width, and by the widest sheet of
-/// each piece, `widest_sheet_radius_of_pieces()`).
+/// each piece, `Voxel_skeleton::piece_sheet_radii`).
 ///
 /// The level of detail is one step. Which branches, junctions and pieces the rig has is a
 /// modelling choice made at one feature size; the resolution only sets how precisely the
@@ -49,12 +49,12 @@ namespace Geodesic_skeleton {
 /// branches through the middle of it.
 ///
 /// Then, on the finest grid: `to_graph()` (the curve skeleton, with the mesh vertices mapped
-/// to it), `smooth_skeleton()` (5-point moving average), `move_skeleton_inside()` (points
+/// to it and the skeleton's sheet widths), `smooth_skeleton()` (5-point moving average), `move_skeleton_inside()` (points
 /// that smoothing took out of a closed mesh go back in) and `split_into_bones()` (joints and
 /// bones, rooted at the most central junction; chains end short of the tips and long bones
 /// are cut at a spacing, as artists place joints), which splits a sheet's chain in lengths of
-/// its width and a piece at the level of detail its pruning judged by (`sheet_half_widths()`
-/// of the grid of the level of detail). `voxelize()` hands the mesh as it rasterised it
+/// its width and a piece at the level of detail its pruning judged by (the sheet radii of
+/// the grid of the level of detail). `voxelize()` hands the mesh as it rasterised it
 /// (`Voxelized_surface`) to the stages that test inside and outside.
 ///
 /// The result is in the mesh's own coordinates and does not change (beyond the rounding
@@ -181,11 +181,11 @@ namespace Geodesic_skeleton {
 ///     \cgalParamType{a pointer to a `Curve_skeleton<Point, vertex_descriptor>`}
 ///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{voxelized_solid_output}
+///   \cgalParamNBegin{voxelized_solid}
 ///     \cgalParamDescription{receives the solid as `voxelize()` gives it for the mesh at
 ///                           `resolution` (with `fill_holes`, `keep_surface_voxels`,
 ///                           `memory_limit` and `vertex_point_map`), before any stage changes
-///                           it: `compute_skinning_weights()` takes it (its `voxelized_solid`)
+///                           it: `compute_skinning_weights()` reads it through the same name
 ///                           instead of voxelizing the mesh again (package parameter)}
 ///     \cgalParamType{a pointer to a `Dense_voxel_grid`}
 ///     \cgalParamDefault{none}
@@ -241,10 +241,10 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, mesh));
   internal::extract_control_skeleton_with(
-      mesh, vpm, out, settings, internal::output_pointer<Skeleton>(np, internal_np::curve_skeleton_output_tag),
-      internal::output_pointer<Skeleton>(np, internal_np::thinned_skeleton_output_tag),
-      internal::output_pointer<Dense_voxel_grid>(np, internal_np::voxelized_solid_output_tag), clock, report);
-  if(Reeb_graph<FaceGraph>* reeb = internal::output_pointer<Reeb_graph<FaceGraph>>(np, internal_np::reeb_graph_output_tag))
+      mesh, vpm, out, settings, internal::written_output<Skeleton>(np, internal_np::curve_skeleton_output_tag),
+      internal::written_output<Skeleton>(np, internal_np::thinned_skeleton_output_tag),
+      internal::written_output<Dense_voxel_grid>(np, internal_np::voxelized_solid_tag), clock, report);
+  if(Reeb_graph<FaceGraph>* reeb = internal::written_output<Reeb_graph<FaceGraph>>(np, internal_np::reeb_graph_output_tag))
   {
     const std::size_t intervals =
         choose_parameter(get_parameter(np, internal_np::number_of_reeb_intervals_tag),

@@ -90,7 +90,7 @@ Voxel_frame world_aligned_frame(const FaceGraph& mesh, VertexPointMap vpm)
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{voxelized_surface}
 ///     \cgalParamDescription{the mesh as `voxelize()` rasterised it (its
-///                           `voxelized_surface_output`); the quarter voxel is one of its
+///                           `voxelized_surface`); the quarter voxel is one of its
 ///                           frame (package parameter)}
 ///     \cgalParamType{`const Voxelized_surface*`}
 ///     \cgalParamDefault{the mesh's faces in a grid along the world axes with

@@ -16,6 +16,8 @@
 
 #include <CGAL/Named_function_parameters.h>
 
+#include <type_traits>
+
 namespace CGAL {
 namespace Geodesic_skeleton {
 
@@ -25,6 +27,28 @@ namespace internal_np {
 #include <CGAL/Geodesic_skeleton/internal/parameter_names.h>
 #undef CGAL_GEODESIC_SKELETON_NAMED_PARAMETER
 } // namespace internal_np
+
+namespace internal {
+
+// What an output named parameter (`curve_skeleton_output`, `voxelized_surface` given to
+// voxelize(), ...) points to, or null when it is not given or is a null pointer: that output
+// is then not made. A name that one stage writes and the next reads must reach the writer as
+// a pointer to a writable object.
+template <typename Output, typename NamedParameters, typename Tag>
+Output* written_output(const NamedParameters& np, Tag)
+{
+  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, Tag>::value)
+    return nullptr;
+  else
+  {
+    using Given = std::decay_t<decltype(CGAL::parameters::get_parameter(np, Tag{}))>;
+    static_assert(std::is_convertible_v<Given, Output*>,
+                  "this output named parameter must be a pointer to a writable (non-const) object");
+    return CGAL::parameters::get_parameter(np, Tag{});
+  }
+}
+
+} // namespace internal
 
 /// \ingroup PkgGeodesicSkeletonRef
 /// Named parameters: CGAL's own (re-exported) and the package's new names.

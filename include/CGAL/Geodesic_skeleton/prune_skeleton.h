@@ -9,10 +9,13 @@
 /// iterative snipping of spurious end branches, which is the package's addition to
 /// Algorithm 1 (not in the paper).
 
-#include <CGAL/Geodesic_skeleton/parameter_ranges.h>
+#include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
+#include <CGAL/Geodesic_skeleton/Voxel_skeleton.h>
 #include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
 #include <CGAL/Geodesic_skeleton/internal/prune/branched_regions.h>
 #include <CGAL/Geodesic_skeleton/internal/prune/spurious_branches.h>
+#include <CGAL/Geodesic_skeleton/internal/voxel_components.h>
+#include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
 #include <CGAL/property_map.h>
@@ -39,6 +42,74 @@ struct Pruning_report
   std::size_t rounds = 0;                    ///< rounds of pruning and snipping that changed something
 };
 
+namespace internal {
+
+// The radii reach the stages as std::function: those are then compiled once per voxel set
+// type, not once per type of named-parameter pack and maps (a call of the chain with one
+// more parameter would otherwise compile the whole of pruning again).
+using Radius_of_voxel = std::function<double(const Voxel_key&)>;
+
+inline double checked_radius(double r)
+{
+  if(!(r >= 0) || !std::isfinite(r))
+    throw std::invalid_argument("prune_skeleton: the MAT radius map gives a negative or non-finite radius");
+  return r;
+}
+
+template <typename NamedParameters>
+Spur_thresholds pruning_thresholds(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const double factor = checked_parameter(parameter_ranges::spur_length_factor,
+                                          choose_parameter(get_parameter(np, internal_np::spur_length_factor_tag),
+                                                           parameter_ranges::spur_length_factor.default_value),
+                                          "prune_skeleton");
+  const double protrusion_factor = checked_parameter(
+      parameter_ranges::limb_protrusion_factor,
+      choose_parameter(get_parameter(np, internal_np::limb_protrusion_factor_tag),
+                       parameter_ranges::limb_protrusion_factor.default_value),
+      "prune_skeleton");
+  return Spur_thresholds{factor, protrusion_factor, {}};
+}
+
+// prune_skeleton() with its thresholds and radii: `radius` judges twigs, `mat_radius` gives
+// the balls, `piece_radius` the unit of a piece's level of detail (at least its largest).
+template <typename VoxelSet>
+Pruning_report prune_skeleton_by(VoxelSet& skeleton, Spur_thresholds thresholds, const Radius_of_voxel& radius,
+                                 const Radius_of_voxel& mat_radius, const Radius_of_voxel& piece_radius)
+{
+  const auto radii = snipping_radii(radius, mat_radius);
+  if(thresholds.limb_protrusion_factor > 0)
+    thresholds.largest_radius_of_piece = largest_radius_of_pieces(skeleton, piece_radius);
+  // Snipping a twig can leave a small cluster of branched points where it hung, and
+  // Algorithm 1 can turn a junction into a plain end branch: alternate the two until
+  // neither changes anything.
+  Pruning_report report;
+  for(bool first = true;; first = false)
+  {
+    const Branched_region_pruning pruned = prune_branched_regions(skeleton, radius);
+    if(first)
+      report.branched_regions = pruned.regions;
+    report.removed_branched_points += pruned.removed_points;
+    Snipping snipped;
+    if(thresholds.spur_length_factor > 0 || thresholds.limb_protrusion_factor > 0)
+    {
+      snipped = snip_spurious_branches_once(skeleton, radii, thresholds);
+      if(snipped.branches == 0) // what is left that the graph, not the voxels, shows as ends
+        snipped = snip_spurious_graph_branches_once(skeleton, radii, thresholds);
+    }
+    report.snipped_branches += snipped.branches;
+    report.snipped_points += snipped.points;
+    if(pruned.removed_points == 0 && snipped.branches == 0)
+      break;
+    ++report.rounds;
+  }
+  return report;
+}
+
+} // namespace internal
+
 /// \ingroup PkgGeodesicSkeletonRef
 /// Prunes a one-voxel-thick curve skeleton in place: the paper's Algorithm 1, then the
 /// snipping of spurious end branches (the package's addition to Algorithm 1, not in the
@@ -60,12 +131,10 @@ struct Pruning_report
 /// end branches of the skeleton's graph as `to_graph()` makes it, which also has ends that
 /// voxel degrees hide (a voxel hanging on a lump, a tip that is a little triangle).
 ///
-/// Both
-/// thresholds are ratios of lengths of the shape, so that the same features are kept at
-/// every resolution that resolves them. The radius that judges a voxel is its MAT radius,
-/// or its sheet radius where that is larger (in a thin sheet, the sheet's half width); the
-/// balls are the MAT balls. The steps are described in the manual, section
-/// \ref manual_prune_method.
+/// Both thresholds are ratios of lengths of the shape, so that the same features are kept at
+/// every resolution that resolves them. The radius that judges a voxel is its MAT radius
+/// (the overload for a `Voxel_skeleton` also reads the sheet radii); the balls are the MAT
+/// balls. The steps are described in the manual, section \ref manual_prune_method.
 ///
 /// The result is deterministic (it does not depend on the set's iteration order).
 /// Pruning never disconnects a component (every terminator stays linked to its
@@ -89,17 +158,6 @@ struct Pruning_report
 ///     \cgalParamDefault{1 voxel everywhere, which makes the snipping threshold an absolute
 ///                       length in voxels}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{sheet_radius_map}
-///     \cgalParamDescription{the sheet radius of each skeleton voxel, in voxels, as `thin()`
-///                           records it (`sheet_radius_in_voxels_map()`): in a thin sheet,
-///                           the sheet's half width. Where it is larger than the MAT radius,
-///                           it judges the voxel's twigs, so that the twigs of a sheet are
-///                           pruned by the sheet's width, not its thickness
-///                           (`extract_control_skeleton()` gives it) (package parameter)}
-///     \cgalParamType{a model of `ReadablePropertyMap` with `Voxel_key` as key type and a
-///                    number as value type}
-///     \cgalParamDefault{0 everywhere: the MAT radius judges}
-///   \cgalParamNEnd
 ///   \cgalParamNBegin{spur_length_factor}
 ///     \cgalParamDescription{the threshold of the snipping, in MAT radii at the junction, in
 ///                           [0, 100]; 0 turns snipping off (package parameter)}
@@ -115,23 +173,11 @@ struct Pruning_report
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{0.75}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{piece_radius_map}
-///     \cgalParamDescription{at each skeleton voxel, a radius of its piece measured
-///                           otherwise, in voxels: the largest radius of a piece, the unit of
-///                           `limb_protrusion_factor`, is at least the largest value of this
-///                           map over the piece (`extract_control_skeleton()` gives, on the
-///                           grid of its level of detail, the widest sheet of each piece read
-///                           across close levels: `widest_sheet_radius_of_pieces()` of
-///                           `thin()`'s `slanted_sheet_radius_map`) (package parameter)}
-///     \cgalParamType{a model of `ReadablePropertyMap` with `Voxel_key` as key type and a
-///                    number as value type}
-///     \cgalParamDefault{0 everywhere: the largest MAT or sheet radius of the piece}
-///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \returns what was removed, and how many rounds of snipping were made.
 /// \throws std::invalid_argument when `spur_length_factor` or `limb_protrusion_factor` is
-///         out of range, or a radius, sheet radius or piece radius is negative or not finite.
+///         out of range, or a radius is negative or not finite.
 ///
 /// \b Complexity: O(N log N + V M) for N skeleton voxels per round of snipping (one Dijkstra
 /// per region, over the region; each end branch traced once), where the protrusions of the
@@ -143,74 +189,54 @@ template <typename VoxelSet, typename NamedParameters = CGAL::parameters::Defaul
 Pruning_report prune_skeleton(VoxelSet& skeleton,
                               const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
+  const auto mat_radius_map =
+      CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::mat_radius_map_tag),
+                                         CGAL::Constant_property_map<Voxel_key, double>(1.0));
+  const internal::Radius_of_voxel mat_radius = [&](const Voxel_key& k) {
+    return internal::checked_radius(static_cast<double>(get(mat_radius_map, k)));
+  };
+  return internal::prune_skeleton_by(skeleton, internal::pruning_thresholds(np), mat_radius, mat_radius, mat_radius);
+}
 
-  const double factor = internal::checked_parameter(
-      parameter_ranges::spur_length_factor,
-      choose_parameter(get_parameter(np, internal_np::spur_length_factor_tag),
-                       parameter_ranges::spur_length_factor.default_value),
-      "prune_skeleton");
-  const double protrusion_factor = internal::checked_parameter(
-      parameter_ranges::limb_protrusion_factor,
-      choose_parameter(get_parameter(np, internal_np::limb_protrusion_factor_tag),
-                       parameter_ranges::limb_protrusion_factor.default_value),
-      "prune_skeleton");
-  const auto mat_radius_map = choose_parameter(get_parameter(np, internal_np::mat_radius_map_tag),
-                                               CGAL::Constant_property_map<Voxel_key, double>(1.0));
-  const auto sheet_radius_map = choose_parameter(get_parameter(np, internal_np::sheet_radius_map_tag),
-                                                 CGAL::Constant_property_map<Voxel_key, double>(0.0));
-  auto checked = [](double r, const char* map) {
-    if(!(r >= 0) || !std::isfinite(r))
-      throw std::invalid_argument(std::string("prune_skeleton: the ") + map +
-                                  " gives a negative or non-finite radius");
-    return r;
+/// \ingroup PkgGeodesicSkeletonRef
+/// Prunes the voxels of a `Voxel_skeleton` as `prune_skeleton(skeleton.voxels, np)` does,
+/// with the MAT radius of `distances` and the radii that thinning measured: a voxel's twigs
+/// are judged by the larger of its MAT radius and its sheet radius (in a thin sheet, the
+/// sheet's width rather than its thickness), and the largest radius of a piece, the unit of
+/// `limb_protrusion_factor`, is at least the widest sheet of the piece read across close
+/// levels. That widest sheet is taken first, before anything is pruned, and kept as
+/// `skeleton.piece_sheet_radii`.
+///
+/// \param skeleton the skeleton, as `thin()` made it (its voxels pruned in place).
+/// \param distances the distance field of the solid that was thinned.
+/// \param np the named parameters `spur_length_factor` and `limb_protrusion_factor`, as for
+///        the other overload (a `mat_radius_map` is not read: `distances` gives it).
+/// \pre the radii of `skeleton` are in voxels of the grid of `distances`.
+///
+/// \b Complexity: that of the other overload, plus O(K log K) for the K voxels (the pieces)
+///    and O(K) expected hash operations.
+template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Pruning_report prune_skeleton(Voxel_skeleton& skeleton, const Voxel_distance_field& distances,
+                              const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const internal::Spur_thresholds thresholds = internal::pruning_thresholds(np); // checked before any work
+  auto radius_in = [](const Sheet_radii& radii) {
+    return [&radii](const Voxel_key& k) {
+      const auto found = radii.find(k);
+      return found == radii.end() ? 0.0 : found->second;
+    };
   };
-  // The radii reach the internal stages as std::function: those are then compiled once per
-  // voxel set type, not once per type of named-parameter pack and maps (a call of the chain
-  // with one more parameter would otherwise compile the whole of pruning again).
-  using Radius_of_voxel = std::function<double(const Voxel_key&)>;
-  const Radius_of_voxel mat_radius = [&](const Voxel_key& k) {
-    return checked(static_cast<double>(get(mat_radius_map, k)), "MAT radius map");
-  };
+  skeleton.piece_sheet_radii = internal::largest_radius_of_pieces(skeleton.voxels, radius_in(skeleton.slanted_sheet_radii));
+  const Mat_radius_in_voxels_map mat_radius_map = mat_radius_in_voxels_map(distances);
+  const internal::Radius_of_voxel mat_radius = [&](const Voxel_key& k) { return get(mat_radius_map, k); };
   // A twig is judged by the larger of the two radii: in a thin sheet, its width.
-  const Radius_of_voxel radius = [&](const Voxel_key& k) {
-    return (std::max)(mat_radius(k), checked(static_cast<double>(get(sheet_radius_map, k)), "sheet radius map"));
+  const internal::Radius_of_voxel radius = [&, sheet = radius_in(skeleton.sheet_radii)](const Voxel_key& k) {
+    return (std::max)(mat_radius(k), sheet(k));
   };
-  const auto piece_radius_map = choose_parameter(get_parameter(np, internal_np::piece_radius_map_tag),
-                                                 CGAL::Constant_property_map<Voxel_key, double>(0.0));
-  // The unit of a piece's level of detail: its largest radius, or what the map gives.
-  const Radius_of_voxel piece_radius = [&](const Voxel_key& k) {
-    return (std::max)(radius(k), checked(static_cast<double>(get(piece_radius_map, k)), "piece radius map"));
+  const internal::Radius_of_voxel piece_radius = [&, piece = radius_in(skeleton.piece_sheet_radii)](const Voxel_key& k) {
+    return (std::max)(radius(k), piece(k));
   };
-  const auto radii = internal::snipping_radii(radius, mat_radius);
-  // Snipping a twig can leave a small cluster of branched points where it hung, and
-  // Algorithm 1 can turn a junction into a plain end branch: alternate the two until
-  // neither changes anything.
-  internal::Spur_thresholds thresholds{factor, protrusion_factor, {}};
-  if(protrusion_factor > 0)
-    thresholds.largest_radius_of_piece = internal::largest_radius_of_pieces(skeleton, piece_radius);
-  Pruning_report report;
-  for(bool first = true;; first = false)
-  {
-    const internal::Branched_region_pruning pruned = internal::prune_branched_regions(skeleton, radius);
-    if(first)
-      report.branched_regions = pruned.regions;
-    report.removed_branched_points += pruned.removed_points;
-    internal::Snipping snipped;
-    if(factor > 0 || protrusion_factor > 0)
-    {
-      snipped = internal::snip_spurious_branches_once(skeleton, radii, thresholds);
-      if(snipped.branches == 0) // what is left that the graph, not the voxels, shows as ends
-        snipped = internal::snip_spurious_graph_branches_once(skeleton, radii, thresholds);
-    }
-    report.snipped_branches += snipped.branches;
-    report.snipped_points += snipped.points;
-    if(pruned.removed_points == 0 && snipped.branches == 0)
-      break;
-    ++report.rounds;
-  }
-  return report;
+  return internal::prune_skeleton_by(skeleton.voxels, thresholds, radius, mat_radius, piece_radius);
 }
 
 } // namespace Geodesic_skeleton

@@ -12,10 +12,13 @@
 #include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
 #include <CGAL/Geodesic_skeleton/Voxel_frame.h>
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
+#include <CGAL/Geodesic_skeleton/Voxel_skeleton.h>
+#include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
 #include <CGAL/Geodesic_skeleton/internal/route_skeleton_on_finer_grid/finer_grid_router.h>
 #include <CGAL/Geodesic_skeleton/internal/to_graph/skeleton_adjacency.h>
 
 #include <cstddef>
+#include <utility>
 
 namespace CGAL {
 namespace Geodesic_skeleton {
@@ -101,6 +104,30 @@ std::size_t route_skeleton_on_finer_grid(const VoxelSet& coarse_skeleton, const 
   const internal::Voxel_branches branches = internal::voxel_branches(coarse_skeleton);
   internal::Finer_grid_router router(branches, coarse_distances, fine_distances, coarser_voxel);
   return router.route(fine_skeleton);
+}
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// Routes the voxels of a `Voxel_skeleton` on a finer grid, as the other overload does:
+/// `skeleton.voxels` become the routed voxels of the finer grid and
+/// `skeleton.coarser_voxel` the voxel of the coarser grid each stands for, whose radii it
+/// keeps reading (`Voxel_skeleton::radius_voxel()`); the radii stay those of the coarser grid.
+///
+/// \param skeleton the pruned skeleton on the coarser grid, routed in place.
+/// \param coarse_distances the distance transform of the coarser grid's solid.
+/// \param fine_distances the distance transform of the finer grid's solid.
+/// \returns the number of branches that followed the coarser branch's voxels.
+/// \pre as for the other overload; `skeleton.coarser_voxel` is empty (a skeleton routed once).
+///
+/// \b Complexity: that of the other overload.
+inline std::size_t route_skeleton_on_finer_grid(Voxel_skeleton& skeleton, const Voxel_distance_field& coarse_distances,
+                                                const Voxel_distance_field& fine_distances)
+{
+  Sparse_voxel_set fine_voxels;
+  fine_voxels.reset(fine_distances.frame(), fine_distances.box());
+  const std::size_t followed = route_skeleton_on_finer_grid(skeleton.voxels, coarse_distances, fine_distances,
+                                                            fine_voxels, skeleton.coarser_voxel);
+  skeleton.voxels = std::move(fine_voxels);
+  return followed;
 }
 
 } // namespace Geodesic_skeleton

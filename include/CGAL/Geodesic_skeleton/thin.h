@@ -10,6 +10,7 @@
 
 #include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
+#include <CGAL/Geodesic_skeleton/Voxel_skeleton.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
 #include <CGAL/Geodesic_skeleton/internal/thin/grassfire.h>
 #include <CGAL/Geodesic_skeleton/internal/thin/simple_point.h>
@@ -29,8 +30,8 @@ namespace CGAL {
 namespace Geodesic_skeleton {
 
 /// \ingroup PkgGeodesicSkeletonRef
-/// How far apart, in voxels, two levels of distance to the outside may be for `thin()`'s
-/// `slanted_sheet_radius_map` to read their rounds together: half a voxel. The middle of
+/// How far apart, in voxels, two levels of distance to the outside may be for
+/// `Voxel_skeleton::slanted_sheet_radii` to read their rounds together: half a voxel. The middle of
 /// a slanted plate about eight voxels thick (anchor.off's at the default resolution) lies
 /// on levels 3.61, 3.74, 4.00 and 4.12 voxels deep, each next to one within the band.
 inline constexpr double slanted_sheet_depth_band = 0.5;
@@ -51,6 +52,58 @@ inline double default_thin_part_radius(int resolution)
   const double default_radius = parameter_ranges::thin_part_radius.default_value;
   return default_radius * (std::max)(1.0, double(resolution) / double(default_voxel_resolution));
 }
+
+namespace internal {
+
+// thin(), and the radii of the voxels kept written to `skeleton` when it is not null.
+template <typename VoxelSet, typename VoxelDistanceField, typename NamedParameters>
+std::size_t thin_recording(VoxelSet& voxels, const VoxelDistanceField& distances, const NamedParameters& np,
+                           Voxel_skeleton* skeleton)
+{
+  const char* caller = "thin";
+  const double thin_part_radius = checked_parameter(
+      parameter_ranges::thin_part_radius,
+      CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::thin_part_radius_tag),
+                                         parameter_ranges::thin_part_radius.default_value),
+      caller);
+  const Voxel_box box = require_nonempty_box(voxels, 2, caller);
+  const Grid_layout layout(box);
+  const bool records_sheet_radii = skeleton != nullptr;
+  const double bytes_per_box_voxel = records_sheet_radii ? 7. : 5.; // + the 16-bit rounds of sheet_radius()
+  // Per voxel of the set, at most: its place in the order, a round's queue and candidates
+  // (4 bytes each), and the work lists of the parallel deletions (16).
+  require_memory(bytes_per_box_voxel * double(layout.volume()) + 28. * double(voxels.size()), memory_limit(np),
+                 layout, caller, "thinning a box");
+
+  const std::vector<std::uint32_t> copied_d2 = distances_over(distances, layout);
+  const std::uint32_t* d2 = copied_d2.data();
+
+  std::vector<std::uint8_t> state = to_bytes(voxels, layout);
+  const std::uint32_t largest_thin_d2 = thin_part_d2(thin_part_radius);
+  const std::vector<std::uint32_t> order = sorted_by_burning_level(state, d2, layout, largest_thin_d2);
+  Grassfire fire(layout, std::move(state), d2, largest_thin_d2, records_sheet_radii);
+  const std::size_t removed = fire.run(order);
+  for_each_cell(layout, [&](std::size_t i, const Voxel_key& k) {
+    if(fire.deleted(i))
+      voxels.erase(k);
+  });
+  if(skeleton != nullptr)
+  {
+    *skeleton = Voxel_skeleton();
+    skeleton->voxels.reset(voxels.frame(), voxels.bounding_box());
+    skeleton->radius_voxel_size = voxels.frame().voxel_size();
+    skeleton->sheet_radii.reserve(voxels.size());
+    skeleton->slanted_sheet_radii.reserve(voxels.size());
+    voxels.for_each([&](const Voxel_key& k) {
+      skeleton->voxels.insert(k);
+      skeleton->sheet_radii.emplace(k, fire.sheet_radius(layout.index(k)));
+      skeleton->slanted_sheet_radii.emplace(k, fire.sheet_radius(layout.index(k), slanted_sheet_depth_band));
+    });
+  }
+  return removed;
+}
+
+} // namespace internal
 
 /// \ingroup PkgGeodesicSkeletonRef
 /// Thins `voxels` to a one-voxel-thick curve skeleton by distance-ordered homotopic
@@ -83,9 +136,8 @@ inline double default_thin_part_radius(int resolution)
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{`default_voxel_memory_limit`, 2 GiB}
 ///     \cgalParamExtra{The need, about 5 bytes per voxel of the set's bounding box (grown
-///                     by two voxels; 7 with a `sheet_radius_map` or a
-///                     `slanted_sheet_radius_map`) plus at most 28 per
-///                     voxel of the set, is checked before allocating.}
+///                     by two voxels; 7 when a `Voxel_skeleton` receives the sheet radii)
+///                     plus at most 28 per voxel of the set, is checked before allocating.}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{thin_part_radius}
 ///     \cgalParamDescription{the largest MAT radius of a thin part, in voxels, in [0, 1000]:
@@ -98,42 +150,6 @@ inline double default_thin_part_radius(int resolution)
 ///     \cgalParamDefault{sqrt(2), a part about two voxels thick; `extract_control_skeleton()`
 ///                       gives `default_thin_part_radius()`, in proportion to the resolution}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{sheet_radius_map}
-///     \cgalParamDescription{receives the <i>sheet radius</i> of every voxel that the thinning
-///                           keeps, in voxels: the number of rounds that its level of
-///                           distance burnt around it. Where the distance to the outside is
-///                           flat, as inside a thin sheet (a wing, a fin, an ear, a plate),
-///                           a level is the whole sheet and its rounds burn it from the rim
-///                           inwards, one voxel step each, so this is the distance to the
-///                           sheet's rim measured in the sheet: on the sheet's middle line,
-///                           its half width, which the MAT radius (its half thickness) does
-///                           not tell. Elsewhere it is 0 or about 1. `extract_control_skeleton()`
-///                           gives `prune_skeleton()` the larger of the two radii as its
-///                           `mat_radius_map` (`skeleton_radius_in_voxels_map()`), so that the
-///                           twigs of a sheet are judged by its width, not its thickness
-///                           (package parameter)}
-///     \cgalParamType{a model of `WritablePropertyMap` with key `Voxel_key` and value
-///                    `double`, such as `boost::associative_property_map<Sheet_radii>`}
-///     \cgalParamDefault{none}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{slanted_sheet_radius_map}
-///     \cgalParamDescription{receives, for every voxel that the thinning keeps, its sheet
-///                           radius read across close levels: the latest round in which a
-///                           26-neighbour was deleted whose distance to the outside is within
-///                           `slanted_sheet_depth_band` (half a voxel) of the voxel's, in
-///                           voxels. The middle of a thick sheet slanted in the grid (a
-///                           plate a few voxels thick) falls on several levels of distance
-///                           less than half a voxel apart, side by side in strips, and each
-///                           level burns its own strips: the `sheet_radius_map` measures a
-///                           strip there, this reading the sheet. `extract_control_skeleton()`
-///                           reads a piece's widest sheet from it on the grid of its level of
-///                           detail (`widest_sheet_radius_of_pieces()`); on a finer grid the
-///                           levels are denser and the band reaches across a thick block's
-///                           flat levels, so there it keeps the `sheet_radius_map`.}
-///     \cgalParamType{a model of `WritablePropertyMap` with key `Voxel_key` and value
-///                    `double`, such as `boost::associative_property_map<Sheet_radii>`}
-///     \cgalParamDefault{none}
-///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \returns the number of voxels erased.
@@ -143,57 +159,32 @@ inline double default_thin_part_radius(int resolution)
 ///
 /// \b Complexity: O(B + N) time and memory for B voxels in the set's bounding box and N in
 ///    the set (each deletion re-queues at most 26 neighbours; the distances are sorted by
-///    counting), plus one write to the `sheet_radius_map` and one to the
-///    `slanted_sheet_radius_map` per voxel kept.
+///    counting).
 template <typename VoxelSet, typename VoxelDistanceField,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 std::size_t thin(VoxelSet& voxels, const VoxelDistanceField& distances,
                  const NamedParameters& np = CGAL::parameters::default_values())
 {
-  const char* caller = "thin";
-  const double thin_part_radius = internal::checked_parameter(
-      parameter_ranges::thin_part_radius,
-      CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::thin_part_radius_tag),
-                                         parameter_ranges::thin_part_radius.default_value),
-      caller);
-  const Voxel_box box = internal::require_nonempty_box(voxels, 2, caller);
-  const internal::Grid_layout layout(box);
-  constexpr bool writes_sheet_radii =
-      !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::sheet_radius_map_t>::value;
-  constexpr bool writes_slanted_sheet_radii =
-      !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::slanted_sheet_radius_map_t>::value;
-  constexpr bool records_sheet_radii = writes_sheet_radii || writes_slanted_sheet_radii;
-  const double bytes_per_box_voxel = records_sheet_radii ? 7. : 5.; // + the 16-bit rounds of sheet_radius()
-  // Per voxel of the set, at most: its place in the order, a round's queue and candidates
-  // (4 bytes each), and the work lists of the parallel deletions (16).
-  internal::require_memory(bytes_per_box_voxel * double(layout.volume()) + 28. * double(voxels.size()),
-                           internal::memory_limit(np), layout, caller, "thinning a box");
+  return internal::thin_recording(voxels, distances, np, nullptr);
+}
 
-  const std::vector<std::uint32_t> copied_d2 = internal::distances_over(distances, layout);
-  const std::uint32_t* d2 = copied_d2.data();
-
-  std::vector<std::uint8_t> state = internal::to_bytes(voxels, layout);
-  const std::uint32_t largest_thin_d2 = internal::thin_part_d2(thin_part_radius);
-  const std::vector<std::uint32_t> order = internal::sorted_by_burning_level(state, d2, layout, largest_thin_d2);
-  internal::Grassfire fire(layout, std::move(state), d2, largest_thin_d2, records_sheet_radii);
-  const std::size_t removed = fire.run(order);
-  internal::for_each_cell(layout, [&](std::size_t i, const Voxel_key& k) {
-    if(fire.deleted(i))
-      voxels.erase(k);
-  });
-  if constexpr(writes_sheet_radii)
-  {
-    auto sheet_radii = CGAL::parameters::get_parameter(np, internal_np::sheet_radius_map_tag);
-    voxels.for_each([&](const Voxel_key& k) { put(sheet_radii, k, fire.sheet_radius(layout.index(k))); });
-  }
-  if constexpr(writes_slanted_sheet_radii)
-  {
-    auto slanted_sheet_radii = CGAL::parameters::get_parameter(np, internal_np::slanted_sheet_radius_map_tag);
-    voxels.for_each([&](const Voxel_key& k) {
-      put(slanted_sheet_radii, k, fire.sheet_radius(layout.index(k), slanted_sheet_depth_band));
-    });
-  }
-  return removed;
+/// \ingroup PkgGeodesicSkeletonRef
+/// Thins `voxels` as `thin(voxels, distances, np)` does and sets `skeleton` to the voxels
+/// kept with their radii (`Voxel_skeleton::sheet_radii` and `slanted_sheet_radii`, in
+/// voxels of this grid, whose voxel size becomes `radius_voxel_size`); the skeleton's other
+/// members are cleared. This is the skeleton that the later voxel stages read.
+///
+/// \tparam VoxelSet,VoxelDistanceField,NamedParameters as for the other overload.
+/// \returns the number of voxels erased.
+///
+/// \b Complexity: that of the other overload, plus two expected O(1) hash insertions and one
+///    insertion into `skeleton.voxels` per voxel kept.
+template <typename VoxelSet, typename VoxelDistanceField,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+std::size_t thin(VoxelSet& voxels, const VoxelDistanceField& distances, Voxel_skeleton& skeleton,
+                 const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return internal::thin_recording(voxels, distances, np, &skeleton);
 }
 
 } // namespace Geodesic_skeleton

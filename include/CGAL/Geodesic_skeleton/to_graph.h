@@ -11,6 +11,7 @@
 #include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
+#include <CGAL/Geodesic_skeleton/Voxel_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Voxelized_surface.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_line_crossings.h>
@@ -87,7 +88,7 @@ namespace Geodesic_skeleton {
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{voxelized_surface}
 ///     \cgalParamDescription{the mesh as `voxelize()` rasterised it (its
-///                           `voxelized_surface_output`), for the inside test (package
+///                           `voxelized_surface`), for the inside test (package
 ///                           parameter)}
 ///     \cgalParamType{`const Voxelized_surface*`}
 ///     \cgalParamDefault{built from `mesh`, `vertex_point_map` and `fill_holes` when a
@@ -156,6 +157,54 @@ void to_graph(const VoxelSet& skeleton, const VoxelDistanceField& distances,
       mesh, vpm, skeleton.frame(), choose_parameter(get_parameter(np, internal_np::fill_holes_tag), true), "to_graph");
   internal::to_graph_impl(skeleton, distances, mesh, graph, vpm, internal::curve_skeleton_output_maps(graph, np),
                           internal::memory_limit(np), mesh_lines);
+}
+
+namespace internal {
+
+// The rounds in which a level that is not a sheet can burn: a shell around a limb or a body
+// burns in one or two (a sheet radius is 0, 1 or 2 there), so only the rounds beyond these
+// measure a sheet's width.
+constexpr double shell_rounds = 2;
+
+// The half width (world units) of a sheet of sheet radius `rounds` on a grid of voxels
+// `voxel_size` long: (rounds - shell_rounds) voxels, at least 0.
+inline double sheet_half_width(const Sheet_radii& radii, const Voxel_key& k, double voxel_size)
+{
+  const auto rounds = radii.find(k);
+  return rounds == radii.end() ? 0.0 : (std::max)(0.0, rounds->second - shell_rounds) * voxel_size;
+}
+
+} // namespace internal
+
+/// \ingroup PkgGeodesicSkeletonRef
+/// The curve skeleton of a `Voxel_skeleton`, as `to_graph(skeleton.voxels, ...)` makes it,
+/// whose vertices also carry the skeleton's radii in world units: a vertex's
+/// `Curve_skeleton_vertex::sheet_half_width` is the half width of the thin sheet it runs
+/// through (its voxel's sheet radius r gives r - 2 voxels, at least 0: any level, a limb's
+/// shell too, burns in up to two rounds, which say nothing of a sheet), and its
+/// `Curve_skeleton_vertex::piece_radius` that of the widest sheet of its piece before
+/// pruning (`Voxel_skeleton::piece_sheet_radii`). Each vertex reads the radii of
+/// `skeleton.radius_voxel()` of its voxel, in voxels `skeleton.radius_voxel_size` long.
+/// `split_into_bones()` reads both.
+///
+/// \param skeleton the voxel skeleton, e.g. pruned and routed.
+/// \param distances,mesh,np as for the other overload.
+/// \param curve receives the curve skeleton (cleared first).
+///
+/// \b Complexity: that of the other overload, plus O(N) expected hash lookups for its N
+///    vertices.
+template <typename VoxelDistanceField, typename FaceGraph, typename Point, typename MeshVertex,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+void to_graph(const Voxel_skeleton& skeleton, const VoxelDistanceField& distances, const FaceGraph& mesh,
+              Curve_skeleton<Point, MeshVertex>& curve, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  to_graph(skeleton.voxels, distances, mesh, curve, np);
+  for(std::size_t v = 0; v < num_vertices(curve); ++v)
+  {
+    const Voxel_key& k = skeleton.radius_voxel(curve[v].voxel);
+    curve[v].sheet_half_width = internal::sheet_half_width(skeleton.sheet_radii, k, skeleton.radius_voxel_size);
+    curve[v].piece_radius = internal::sheet_half_width(skeleton.piece_sheet_radii, k, skeleton.radius_voxel_size);
+  }
 }
 
 } // namespace Geodesic_skeleton

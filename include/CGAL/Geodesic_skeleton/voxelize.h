@@ -104,13 +104,13 @@ namespace Geodesic_skeleton {
 ///     \cgalParamExtra{The need is estimated before allocating: 11 bytes per voxel of the
 ///                     grid's box (6 with `keep_surface_voxels`).}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{voxelized_surface_output}
+///   \cgalParamNBegin{voxelized_surface}
 ///     \cgalParamDescription{receives the triangles rasterised (faces, then hole-filling
 ///                           fans) in the grid's coordinates, for the inside tests of
 ///                           `to_graph()`, `cut_spurious_cycles()` and
-///                           `move_skeleton_inside()` (their `voxelized_surface`), which
-///                           then neither read nor transform the mesh again (package
-///                           parameter)}
+///                           `move_skeleton_inside()`, which read it through the same
+///                           name and then neither read nor transform the mesh again
+///                           (package parameter)}
 ///     \cgalParamType{`Voxelized_surface*`}
 ///     \cgalParamDefault{none; a null pointer is the same}
 ///   \cgalParamNEnd

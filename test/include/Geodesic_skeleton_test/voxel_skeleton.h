@@ -5,7 +5,7 @@
 #define GEODESIC_SKELETON_TEST_VOXEL_SKELETON_H
 
 #include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
-#include <CGAL/Geodesic_skeleton/Skeleton_radius_in_voxels_map.h>
+#include <CGAL/Geodesic_skeleton/Voxel_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/thin.h>

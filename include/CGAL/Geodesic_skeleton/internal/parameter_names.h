@@ -19,12 +19,11 @@ CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(resolution)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(memory_limit)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(fill_holes)
 
-// thin (output); the pipeline gives it to prune_skeleton with the MAT radius
-CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(sheet_radius_map)
+// thin, reach_sheet_lobes
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(thin_part_radius)
 
-// voxelize (output); to_graph, cut_spurious_cycles, move_skeleton_inside (input)
-CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(voxelized_surface_output)
+// the mesh in the grid: voxelize writes it, to_graph, cut_spurious_cycles and
+// move_skeleton_inside read it
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(voxelized_surface)
 
 // prune_skeleton; smooth_skeleton, split_into_bones, to_graph (the skeleton's radii)
@@ -58,8 +57,7 @@ CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(curve_skeleton_output)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(thinned_skeleton_output)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(reeb_graph_output)
 
-// extract_control_skeleton (output); compute_skinning_weights (input)
-CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(voxelized_solid_output)
+// the chain's solid: extract_control_skeleton writes it, compute_skinning_weights reads it
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(voxelized_solid)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(number_of_reeb_intervals)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(level_of_detail_resolution)
@@ -79,9 +77,3 @@ CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(sharpness)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(minimum_weight)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(influence_ratio)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(bone_segmentation_map)
-
-// thin (output, appended)
-CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(slanted_sheet_radius_map)
-
-// prune_skeleton (voxel-keyed, in voxels)
-CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(piece_radius_map)

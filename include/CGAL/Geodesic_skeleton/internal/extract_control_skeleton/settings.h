@@ -7,11 +7,8 @@
 // The settings, stage clock and visitor of extract_control_skeleton(): not part of the API.
 
 #include <CGAL/Geodesic_skeleton/Control_skeleton_report.h>
-#include <CGAL/Geodesic_skeleton/Skeleton_radius_in_voxels_map.h>
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
-#include <CGAL/Geodesic_skeleton/route_skeleton_on_finer_grid.h>
-#include <CGAL/Geodesic_skeleton/sheet_half_widths.h>
 #include <CGAL/Geodesic_skeleton/split_into_bones.h>
 #include <CGAL/Geodesic_skeleton/voxelize.h>
 
@@ -27,14 +24,6 @@
 namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
-
-// What an output named parameter (`curve_skeleton_output`, ...) points to, or null when it
-// is not given or is a null pointer: that output is then not made.
-template <typename Output, typename NamedParameters, typename Tag>
-Output* output_pointer(const NamedParameters& np, Tag tag)
-{
-  return CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, tag), static_cast<Output*>(nullptr));
-}
 
 // Times stages, reports them to the visitor and records them.
 template <typename Visitor>
@@ -131,18 +120,6 @@ Control_skeleton_settings control_skeleton_settings(const NamedParameters& np, c
   s.smallest_radius = given_parameter(np, internal_np::smallest_radius_tag, double());
   s.joint_spacing = given_parameter(np, internal_np::joint_spacing_tag, double());
   return s;
-}
-
-// The sheet_half_widths() of the curve's vertices, read at the voxel of the pruned
-// skeleton that each vertex's voxel stands for (itself when `coarser_voxel` has none).
-template <typename CurveSkeleton>
-std::vector<double> sheet_half_widths_through(const CurveSkeleton& curve, const Sheet_radii& sheet_radii,
-                                              const Coarser_voxel_map& coarser_voxel, double voxel_size)
-{
-  return sheet_half_widths_at(curve, sheet_radii, voxel_size, [&](const Voxel_key& k) {
-    const auto coarser = coarser_voxel.find(k);
-    return coarser == coarser_voxel.end() ? k : coarser->second;
-  });
 }
 
 // A visitor of any type, behind one type.

@@ -11,8 +11,8 @@
 #include <CGAL/Geodesic_skeleton/Control_skeleton_report.h>
 #include <CGAL/Geodesic_skeleton/Curve_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Dense_voxel_grid.h>
-#include <CGAL/Geodesic_skeleton/Skeleton_radius_in_voxels_map.h>
 #include <CGAL/Geodesic_skeleton/Sparse_voxel_set.h>
+#include <CGAL/Geodesic_skeleton/Voxel_skeleton.h>
 #include <CGAL/Geodesic_skeleton/Voxelized_surface.h>
 #include <CGAL/Geodesic_skeleton/cut_spurious_cycles.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
@@ -23,7 +23,6 @@
 #include <CGAL/Geodesic_skeleton/reach_sheet_lobes.h>
 #include <CGAL/Geodesic_skeleton/remove_small_pieces.h>
 #include <CGAL/Geodesic_skeleton/route_skeleton_on_finer_grid.h>
-#include <CGAL/Geodesic_skeleton/sheet_half_widths.h>
 #include <CGAL/Geodesic_skeleton/skeleton_statistics.h>
 #include <CGAL/Geodesic_skeleton/smooth_skeleton.h>
 #include <CGAL/Geodesic_skeleton/split_into_bones.h>
@@ -78,8 +77,7 @@ void extract_control_skeleton_with(
   // the stages that test inside and outside, so that none reads the mesh again.
   Dense_voxel_grid solid;
   Voxelized_surface surface;
-  report.solid_voxels = voxelize(mesh, solid, parameters::combine(parameters::voxelized_surface_output(&surface), np));
-  const double pruning_voxel_size = solid.frame().voxel_size();
+  report.solid_voxels = voxelize(mesh, solid, parameters::combine(parameters::voxelized_surface(&surface), np));
   if(solid_output != nullptr && !finer_than_level_of_detail)
     *solid_output = solid;
   clock.finished("voxelize");
@@ -94,74 +92,58 @@ void extract_control_skeleton_with(
   report.thin_part_radius = settings.thin_part_radius.value_or(default_thin_part_radius(report.resolution));
   // In voxels of the grid that thins, that of the level of detail.
   const double thin_part_radius_of_grid = report.thin_part_radius * pruning_resolution / report.resolution;
-  Sheet_radii sheet_radii, slanted_sheet_radii;
-  thin(solid, distances,
-       parameters::combine(
-           parameters::sheet_radius_map(boost::associative_property_map<Sheet_radii>(sheet_radii)),
-           parameters::slanted_sheet_radius_map(boost::associative_property_map<Sheet_radii>(slanted_sheet_radii)),
-           parameters::thin_part_radius(thin_part_radius_of_grid), np));
-  Sparse_voxel_set skeleton;
-  skeleton.reset(solid.frame(), solid.bounding_box());
-  solid.for_each([&](const Voxel_key& k) { skeleton.insert(k); });
+  Voxel_skeleton skeleton;
+  thin(solid, distances, skeleton,
+       parameters::combine(parameters::thin_part_radius(thin_part_radius_of_grid), np));
   solid = Dense_voxel_grid();
   clock.finished("thin");
 
   if(thinned_output != nullptr)
   {
     Skeleton thinned;
-    to_graph(skeleton, distances, mesh, thinned, with_surface);
+    to_graph(skeleton.voxels, distances, mesh, thinned, with_surface);
     report.thinned = skeleton_statistics(thinned);
     *thinned_output = std::move(thinned);
   }
   else
-    report.thinned = skeleton_statistics_of_voxels(skeleton);
+    report.thinned = skeleton_statistics_of_voxels(skeleton.voxels);
   clock.finished("thinned_graph");
 
   // A thick plate that thinning burnt to a point or a short line gets a branch into each lobe.
   report.sheet_lobes = reach_sheet_lobes(
-      skeleton, distances,
+      skeleton.voxels, distances,
       parameters::combine(parameters::sheet_lobe_reach_factor(settings.sheet_lobe_reach_factor),
                           parameters::thin_part_radius(thin_part_radius_of_grid),
                           np));
   clock.finished("reach_sheet_lobes");
 
-  report.small_pieces = remove_small_pieces(skeleton, distances, np);
+  report.small_pieces = remove_small_pieces(skeleton.voxels, distances, np);
   clock.finished("remove_small_pieces");
 
-  report.spurious_cycles_cut = cut_spurious_cycles(skeleton, mesh, with_surface);
+  report.spurious_cycles_cut = cut_spurious_cycles(skeleton.voxels, mesh, with_surface);
   clock.finished("cut_spurious_cycles");
-  // Pruning judges a piece's twigs by its widest sheet, read across close levels: the
-  // middle of a thick plate slanted in the grid lies on several levels of distance, whose
-  // rounds each measure a strip of it, not the plate.
-  const Sheet_radii widest_sheet_of_piece = widest_sheet_radius_of_pieces(skeleton, slanted_sheet_radii);
-  report.pruning = prune_skeleton(
-      skeleton, parameters::combine(parameters::mat_radius_map(mat_radius_in_voxels_map(distances)),
-                                    parameters::sheet_radius_map(sheet_radius_in_voxels_map(sheet_radii)),
-                                    parameters::piece_radius_map(sheet_radius_in_voxels_map(widest_sheet_of_piece)),
-                                    np));
+  // Pruning judges a twig by the sheet it is in and a piece by its widest sheet, read
+  // across close levels: the middle of a thick plate slanted in the grid lies on several
+  // levels of distance, whose rounds each measure a strip of it, not the plate.
+  report.pruning = prune_skeleton(skeleton, distances, np);
   clock.finished("prune");
 
   // On a finer grid, the same branches, routed through the middle of its solid; each of
   // its voxels stands for a voxel of the pruned skeleton, whose sheet widths it takes.
-  Coarser_voxel_map coarser_voxel;
   if(finer_than_level_of_detail)
   {
     const auto fine_np = stage_parameters(settings.resolution);
     Dense_voxel_grid fine_solid;
     surface = Voxelized_surface();
-    voxelize(mesh, fine_solid, parameters::combine(parameters::voxelized_surface_output(&surface), fine_np));
+    voxelize(mesh, fine_solid, parameters::combine(parameters::voxelized_surface(&surface), fine_np));
     if(solid_output != nullptr)
       *solid_output = fine_solid;
-    report.voxels_joining_pieces = add_skeleton_to_solid(skeleton, fine_solid);
+    report.voxels_joining_pieces = add_skeleton_to_solid(skeleton.voxels, fine_solid);
     report.solid_voxels = fine_solid.size();
     clock.finished("voxelize_finer");
     Voxel_distance_field fine_distances = distance_transform(fine_solid, fine_np);
     clock.finished("distance_transform_finer");
-    Sparse_voxel_set fine_skeleton;
-    fine_skeleton.reset(fine_solid.frame(), fine_solid.bounding_box());
-    report.branches_along_level_of_detail =
-        route_skeleton_on_finer_grid(skeleton, distances, fine_distances, fine_skeleton, coarser_voxel);
-    skeleton = std::move(fine_skeleton);
+    report.branches_along_level_of_detail = route_skeleton_on_finer_grid(skeleton, distances, fine_distances);
     distances = std::move(fine_distances);
   }
   report.voxel_size = distances.frame().voxel_size();
@@ -191,17 +173,6 @@ void extract_control_skeleton_with(
   // not multiply with it (at the default resolution no MAT radius is smaller).
   report.smallest_radius =
       settings.smallest_radius.value_or(default_smallest_radius(report.voxel_size, report.resolution));
-  // A thin sheet's chain is split in lengths of the sheet's width, and a piece at the level
-  // of detail of its widest sheet, as pruning judged them.
-  const std::vector<double> sheet_widths =
-      internal::sheet_half_widths_through(curve, sheet_radii, coarser_voxel, pruning_voxel_size);
-  const std::vector<double> piece_widths =
-      internal::sheet_half_widths_through(curve, widest_sheet_of_piece, coarser_voxel, pruning_voxel_size);
-  for(std::size_t v = 0; v < num_vertices(curve); ++v)
-  {
-    curve[v].sheet_half_width = sheet_widths[v];
-    curve[v].piece_radius = piece_widths[v];
-  }
   // Chains end short of the tips and long bones get joints in between, as artists place them;
   // the spacing is a share of the whole shape, so a character gets as many joints at any size.
   report.tip_joint_setback = settings.split.tip_joint_setback;

@@ -11,6 +11,7 @@
 #include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
 #include <CGAL/Geodesic_skeleton/Voxel_frame.h>
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
+#include <CGAL/Geodesic_skeleton/Voxel_skeleton.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
 #include <CGAL/Geodesic_skeleton/internal/skeleton_branches.h>
 #include <CGAL/Geodesic_skeleton/internal/to_graph/skeleton_adjacency.h>
@@ -35,11 +36,6 @@
 
 namespace CGAL {
 namespace Geodesic_skeleton {
-
-/// \ingroup PkgGeodesicSkeletonRef
-/// For each voxel of a skeleton routed on a finer grid, the voxel of the coarser skeleton
-/// it stands for (`route_skeleton_on_finer_grid()`).
-using Coarser_voxel_map = std::unordered_map<Voxel_key, Voxel_key, Voxel_key_hash>;
 
 namespace internal {
 

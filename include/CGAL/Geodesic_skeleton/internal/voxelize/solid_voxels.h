@@ -212,8 +212,7 @@ Voxelize_settings voxelize_settings(const NamedParameters& np, const char* calle
   settings.fill_holes = choose_parameter(get_parameter(np, internal_np::fill_holes_tag), true);
   settings.keep_surface_voxels = choose_parameter(get_parameter(np, internal_np::keep_surface_voxels_tag), true);
   settings.memory_limit = internal::memory_limit(np, caller); // checked before any work
-  settings.rasterised = choose_parameter(get_parameter(np, internal_np::voxelized_surface_output_tag),
-                                         static_cast<Voxelized_surface*>(nullptr));
+  settings.rasterised = written_output<Voxelized_surface>(np, internal_np::voxelized_surface_tag);
   return settings;
 }
 
