@@ -71,22 +71,28 @@ inline Principal_frame principal_frame(const std::vector<Triangle3>& world_trian
   }
   // The triangles are centred and scaled to unit size on the fly (a copy of them would be
   // as large as the mesh), each value by the same expression at each use.
-  auto corner = [&](const Triangle3& t, int j, int c) { return (t[j][c] - centre[c]) / size; };
-  auto area_of = [&](const Triangle3& w) {
-    const Triangle3 t = {Vec3{corner(w, 0, 0), corner(w, 0, 1), corner(w, 0, 2)},
-                         Vec3{corner(w, 1, 0), corner(w, 1, 1), corner(w, 1, 2)},
-                         Vec3{corner(w, 2, 0), corner(w, 2, 1), corner(w, 2, 2)}};
+  // Each pass scales a triangle once and reads its area from the scaled corners (the
+  // divisions are most of the function's time).
+  auto scaled = [&](const Triangle3& w) {
+    Triangle3 t;
+    for(int j = 0; j < 3; ++j)
+      for(int c = 0; c < 3; ++c)
+        t[j][c] = (w[j][c] - centre[c]) / size;
+    return t;
+  };
+  auto area_of = [](const Triangle3& t) {
     return 0.5 * std::sqrt(dot3(cross3(sub(t[1], t[0]), sub(t[2], t[0])), cross3(sub(t[1], t[0]), sub(t[2], t[0]))));
   };
 
   double area_sum = 0;
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  for(const Triangle3& t : world_triangles)
+  for(const Triangle3& w : world_triangles)
   {
+    const Triangle3 t = scaled(w);
     const double area = area_of(t);
     area_sum += area;
     for(int c = 0; c < 3; ++c)
-      centroid[c] += area * (corner(t, 0, c) + corner(t, 1, c) + corner(t, 2, c)) / 3.;
+      centroid[c] += area * (t[0][c] + t[1][c] + t[2][c]) / 3.;
   }
   if(!(area_sum > 0) || !std::isfinite(area_sum))
     throw std::invalid_argument(std::string(caller) +
@@ -97,13 +103,14 @@ inline Principal_frame principal_frame(const std::vector<Triangle3>& world_trian
   // with s the sum of its vertices.
   // (Six sums: the matrix is symmetric.)
   double moment[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-  for(const Triangle3& t : world_triangles)
+  for(const Triangle3& w : world_triangles)
   {
+    const Triangle3 t = scaled(w);
     double v[3][3], s[3];
     for(int c = 0; c < 3; ++c)
     {
       for(int j = 0; j < 3; ++j)
-        v[j][c] = corner(t, j, c) - centroid[c];
+        v[j][c] = t[j][c] - centroid[c];
       s[c] = (v[0][c] + v[1][c]) + v[2][c];
     }
     const double weight = area_of(t) / 12.;
@@ -131,10 +138,11 @@ inline Principal_frame principal_frame(const std::vector<Triangle3>& world_trian
   double third_moment[2] = {0, 0};
   for(const Triangle3& w : world_triangles)
   {
+    const Triangle3 scaled_triangle = scaled(w);
     Eigen::Vector3d v[3];
     for(int j = 0; j < 3; ++j)
-      v[j] = Eigen::Vector3d(corner(w, j, 0), corner(w, j, 1), corner(w, j, 2)) - centroid;
-    const double area = area_of(w);
+      v[j] = Eigen::Vector3d(scaled_triangle[j][0], scaled_triangle[j][1], scaled_triangle[j][2]) - centroid;
+    const double area = area_of(scaled_triangle);
     for(int a = 0; a < 2; ++a)
     {
       double t[3];
