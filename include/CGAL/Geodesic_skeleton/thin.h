@@ -175,7 +175,13 @@ std::size_t thin(VoxelSet& voxels, const VoxelDistanceField& distances,
 /// members are cleared. This is the skeleton that the later voxel stages read.
 ///
 /// \tparam VoxelSet,VoxelDistanceField,NamedParameters as for the other overload.
+/// \param voxels the solid, thinned in place (voxels are only erased).
+/// \param distances its distance field, from `distance_transform(voxels)`.
+/// \param skeleton receives the voxels kept and their radii.
+/// \param np the named parameters of the other overload.
 /// \returns the number of voxels erased.
+/// \pre `voxels` is not empty.
+/// \throws as the other overload does.
 ///
 /// \b Complexity: that of the other overload, plus two expected O(1) hash insertions and one
 ///    insertion into `skeleton.voxels` per voxel kept.
