@@ -14,6 +14,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -223,6 +224,58 @@ BOOST_AUTO_TEST_CASE(polylines_hold_every_bone_point)
     ++polylines;
   }
   BOOST_TEST(polylines == num_edges(c) + c[boost::graph_bundle].cut_bones.size());
+}
+
+// A curve skeleton's polylines: one per branch between end points and junctions, the
+// junction in each of its branches, a closed loop ending on its first point.
+BOOST_AUTO_TEST_CASE(curve_skeleton_polylines_are_its_branches)
+{
+  Skeleton s;
+  auto add = [&](double x, double y, double z) {
+    const auto v = add_vertex(s);
+    s[v].point = Point(x, y, z);
+    return v;
+  };
+  // A Y: the junction at the origin, arms of 2, 2 and 3 points beyond it.
+  const auto junction = add(0, 0, 0);
+  const std::vector<std::vector<std::array<double, 3>>> arms{
+      {{1, 0, 0}, {2, 0, 0}}, {{0, 1, 0}, {0, 2, 0}}, {{0, 0, -1}, {0, 0, -2}, {0, 0, -3}}};
+  for(const auto& arm : arms)
+  {
+    auto previous = junction;
+    for(const auto& p : arm)
+    {
+      const auto v = add(p[0], p[1], p[2]);
+      add_edge(previous, v, s);
+      previous = v;
+    }
+  }
+  // A separate loop of 4 points.
+  const auto a = add(10, 0, 0), b = add(11, 0, 0), c = add(11, 1, 0), d = add(10, 1, 0);
+  add_edge(a, b, s);
+  add_edge(b, c, s);
+  add_edge(c, d, s);
+  add_edge(d, a, s);
+  std::stringstream file;
+  gs::IO::write_curve_skeleton_polylines(file, s);
+  std::vector<std::size_t> sizes;
+  std::size_t closed = 0;
+  for(std::string line; std::getline(file, line);)
+  {
+    std::istringstream in(line);
+    std::size_t n = 0;
+    in >> n;
+    std::vector<std::array<double, 3>> points;
+    for(std::array<double, 3> p; in >> p[0] >> p[1] >> p[2];)
+      points.push_back(p);
+    BOOST_TEST(points.size() == n);
+    if(points.size() >= 2 && points.front() == points.back())
+      ++closed;
+    sizes.push_back(n);
+  }
+  std::sort(sizes.begin(), sizes.end());
+  BOOST_TEST(sizes == (std::vector<std::size_t>{3, 3, 4, 5}), boost::test_tools::per_element());
+  BOOST_TEST(closed == 1u);
 }
 
 BOOST_AUTO_TEST_CASE(json_lists_joints_with_parents_and_kinds)
