@@ -36,7 +36,6 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
-#include <numeric>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -470,30 +469,22 @@ void write_file(const std::string& path, const std::string& text)
   }
 }
 
-// The connected parts of the mesh: its vertices joined along edges, isolated vertices left
-// out (a union-find over the edges: PMP::connected_components() walks the faces through
-// property maps, and on a mesh of a million faces costs as much as the whole chain).
-// The mesh's counts for the JSON: whether it is closed and its connected parts (isolated
-// vertices aside), in one pass over the edges (a union-find with path halving).
+// The mesh's counts for the JSON, in one pass over the edges: whether it is closed, and its
+// connected parts, its vertices joined along edges, isolated vertices left out (a
+// union-find: PMP::connected_components() walks the faces through property maps, and on a
+// mesh of a million faces costs as much as the whole chain).
 nlohmann::json mesh_json(const Mesh& mesh)
 {
-  std::vector<std::uint32_t> part(mesh.num_vertices()); // by vertex index, removed ones too
-  std::iota(part.begin(), part.end(), 0u);
-  auto root = [&](std::uint32_t v) {
-    while(part[v] != v)
-      v = part[v] = part[part[v]];
-    return v;
-  };
+  boost::disjoint_sets_with_storage<> parts(mesh.num_vertices()); // by vertex index, removed ones too
   bool closed = true;
   for(auto e : edges(mesh))
   {
     closed = closed && !is_border(e, mesh);
-    const std::uint32_t a = root(std::uint32_t(source(e, mesh))), b = root(std::uint32_t(target(e, mesh)));
-    part[(std::max)(a, b)] = (std::min)(a, b);
+    parts.union_set(std::size_t(source(e, mesh)), std::size_t(target(e, mesh)));
   }
   std::size_t components = 0;
   for(vertex_descriptor v : vertices(mesh))
-    components += !mesh.is_isolated(v) && root(std::uint32_t(v)) == std::uint32_t(v);
+    components += !mesh.is_isolated(v) && parts.find_set(std::size_t(v)) == std::size_t(v);
   return {{"vertices", num_vertices(mesh)}, {"faces", num_faces(mesh)}, {"closed", closed}, {"components", components}};
 }
 

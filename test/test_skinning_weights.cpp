@@ -344,6 +344,20 @@ BOOST_AUTO_TEST_CASE(the_chains_solid_gives_the_same_weights)
                    std::equal(given[v].bone.begin(), given[v].bone.begin() + given[v].size(), expected[v].bone.begin()) &&
                    std::equal(given[v].weight.begin(), given[v].weight.begin() + given[v].size(), expected[v].weight.begin()));
   BOOST_TEST(differing == 0u);
+  // The stages' pack may hold the voxelized surface, for reading or writing: the weights
+  // neither read nor write it.
+  gs::Voxelized_surface surface;
+  const auto with_writable_surface =
+      weights_of(mesh, skeleton, params::combine(params::resolution(48), params::voxelized_surface(&surface)));
+  const auto with_read_only_surface =
+      weights_of(mesh, skeleton, params::combine(params::resolution(48), params::voxelized_surface(&std::as_const(surface))));
+  BOOST_TEST(surface.empty());
+  auto same = [](const gs::Bone_weights& a, const gs::Bone_weights& b) { return a.bone == b.bone && a.weight == b.weight; };
+  for(vertex_descriptor v : vertices(mesh))
+  {
+    BOOST_TEST(same(with_writable_surface[v], expected[v]));
+    BOOST_TEST(same(with_read_only_surface[v], expected[v]));
+  }
   BOOST_CHECK_THROW(weights_of(mesh, skeleton, params::combine(params::resolution(64), params::voxelized_solid(&std::as_const(solid)))),
                     std::invalid_argument);
   const Mesh other = shapes::mesh_of<Mesh>(shapes::cylinder(1, 21, 24, 46, true));

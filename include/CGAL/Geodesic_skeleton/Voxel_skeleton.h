@@ -20,6 +20,17 @@ namespace Geodesic_skeleton {
 /// A radius per voxel, in voxels (a voxel without an entry has radius 0).
 using Sheet_radii = std::unordered_map<Voxel_key, double, Voxel_key_hash>;
 
+namespace internal {
+
+// The radius of `k` in `radii`, 0 when it has none.
+inline double radius_in(const Sheet_radii& radii, const Voxel_key& k)
+{
+  const auto found = radii.find(k);
+  return found == radii.end() ? 0.0 : found->second;
+}
+
+} // namespace internal
+
 /// \ingroup PkgGeodesicSkeletonRef
 /// For each voxel of a skeleton on a finer grid, the voxel of the coarser grid's skeleton
 /// it stands for (`route_skeleton_on_finer_grid()`).
@@ -63,7 +74,7 @@ struct Voxel_skeleton
   double radius_voxel_size = 0;
 
   /// The voxel whose radii `k` reads: `coarser_voxel[k]`, or `k` itself.
-  const Voxel_key& radius_voxel(const Voxel_key& k) const
+  Voxel_key radius_voxel(const Voxel_key& k) const
   {
     const auto coarser = coarser_voxel.find(k);
     return coarser == coarser_voxel.end() ? k : coarser->second;

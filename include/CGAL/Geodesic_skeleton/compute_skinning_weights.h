@@ -371,8 +371,12 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   Dense_voxel_grid own_grid;
   const Dense_voxel_grid* given_grid =
       choose_parameter(get_parameter(np, internal_np::voxelized_solid_tag), static_cast<const Dense_voxel_grid*>(nullptr));
+  // The weights need no rasterised surface: a `voxelized_surface` in the pack (the other
+  // stages') is neither written nor read.
+  const auto voxelize_np =
+      parameters::combine(parameters::voxelized_surface(static_cast<Voxelized_surface*>(nullptr)), np);
   if(given_grid == nullptr)
-    voxelize(mesh, own_grid, np);
+    voxelize(mesh, own_grid, voxelize_np);
   const Dense_voxel_grid& grid = given_grid != nullptr ? *given_grid : own_grid;
   report.solid_voxels = grid.size();
   const Voxel_frame frame = grid.frame();
@@ -402,7 +406,7 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   }
   const auto triangles = internal::triangles_of(mesh, vim);
   if(given_grid != nullptr)
-    internal::check_grid_frame(grid_points, triangles, internal::voxelize_settings(np, caller).resolution,
+    internal::check_grid_frame(grid_points, triangles, internal::voxelize_settings(voxelize_np, caller).resolution,
                                given_grid->empty(), caller);
 
   // The surface at the scale of the voxels: what follows is done per cluster of vertices

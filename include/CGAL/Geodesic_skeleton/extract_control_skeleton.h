@@ -49,13 +49,14 @@ namespace Geodesic_skeleton {
 /// branches through the middle of it.
 ///
 /// Then, on the finest grid: `to_graph()` (the curve skeleton, with the mesh vertices mapped
-/// to it and the skeleton's sheet widths), `smooth_skeleton()` (5-point moving average), `move_skeleton_inside()` (points
-/// that smoothing took out of a closed mesh go back in) and `split_into_bones()` (joints and
-/// bones, rooted at the most central junction; chains end short of the tips and long bones
-/// are cut at a spacing, as artists place joints), which splits a sheet's chain in lengths of
-/// its width and a piece at the level of detail its pruning judged by (the sheet radii of
-/// the grid of the level of detail). `voxelize()` hands the mesh as it rasterised it
-/// (`Voxelized_surface`) to the stages that test inside and outside.
+/// to it and the skeleton's sheet widths), `smooth_skeleton()` (5-point moving average),
+/// `move_skeleton_inside()` (points that smoothing took out of a closed mesh go back in)
+/// and `split_into_bones()` (joints and bones, rooted at the most central junction; chains
+/// end short of the tips and long bones are cut at a spacing, as artists place joints),
+/// which splits a sheet's chain in lengths of its width and a piece at the level of detail
+/// its pruning judged by (the sheet radii of the grid of the level of detail). `voxelize()`
+/// hands the mesh as it rasterised it (`Voxelized_surface`) to the stages that test inside
+/// and outside.
 ///
 /// The result is in the mesh's own coordinates and does not change (beyond the rounding
 /// of coordinates) when the mesh is rotated or moved, since the grid follows the mesh's

@@ -220,21 +220,16 @@ Pruning_report prune_skeleton(Voxel_skeleton& skeleton, const Voxel_distance_fie
                               const NamedParameters& np = CGAL::parameters::default_values())
 {
   const internal::Spur_thresholds thresholds = internal::pruning_thresholds(np); // checked before any work
-  auto radius_in = [](const Sheet_radii& radii) {
-    return [&radii](const Voxel_key& k) {
-      const auto found = radii.find(k);
-      return found == radii.end() ? 0.0 : found->second;
-    };
-  };
-  skeleton.piece_sheet_radii = internal::largest_radius_of_pieces(skeleton.voxels, radius_in(skeleton.slanted_sheet_radii));
+  skeleton.piece_sheet_radii = internal::largest_radius_of_pieces(
+      skeleton.voxels, [&](const Voxel_key& k) { return internal::radius_in(skeleton.slanted_sheet_radii, k); });
   const Mat_radius_in_voxels_map mat_radius_map = mat_radius_in_voxels_map(distances);
   const internal::Radius_of_voxel mat_radius = [&](const Voxel_key& k) { return get(mat_radius_map, k); };
   // A twig is judged by the larger of the two radii: in a thin sheet, its width.
-  const internal::Radius_of_voxel radius = [&, sheet = radius_in(skeleton.sheet_radii)](const Voxel_key& k) {
-    return (std::max)(mat_radius(k), sheet(k));
+  const internal::Radius_of_voxel radius = [&](const Voxel_key& k) {
+    return (std::max)(mat_radius(k), internal::radius_in(skeleton.sheet_radii, k));
   };
-  const internal::Radius_of_voxel piece_radius = [&, piece = radius_in(skeleton.piece_sheet_radii)](const Voxel_key& k) {
-    return (std::max)(radius(k), piece(k));
+  const internal::Radius_of_voxel piece_radius = [&](const Voxel_key& k) {
+    return (std::max)(radius(k), internal::radius_in(skeleton.piece_sheet_radii, k));
   };
   return internal::prune_skeleton_by(skeleton.voxels, thresholds, radius, mat_radius, piece_radius);
 }

@@ -95,9 +95,10 @@ std::size_t thin_recording(VoxelSet& voxels, const VoxelDistanceField& distances
     skeleton->sheet_radii.reserve(voxels.size());
     skeleton->slanted_sheet_radii.reserve(voxels.size());
     voxels.for_each([&](const Voxel_key& k) {
+      const std::size_t i = layout.index(k);
       skeleton->voxels.insert(k);
-      skeleton->sheet_radii.emplace(k, fire.sheet_radius(layout.index(k)));
-      skeleton->slanted_sheet_radii.emplace(k, fire.sheet_radius(layout.index(k), slanted_sheet_depth_band));
+      skeleton->sheet_radii.emplace(k, fire.sheet_radius(i));
+      skeleton->slanted_sheet_radii.emplace(k, fire.sheet_radius(i, slanted_sheet_depth_band));
     });
   }
   return removed;

@@ -170,8 +170,7 @@ constexpr double shell_rounds = 2;
 // `voxel_size` long: (rounds - shell_rounds) voxels, at least 0.
 inline double sheet_half_width(const Sheet_radii& radii, const Voxel_key& k, double voxel_size)
 {
-  const auto rounds = radii.find(k);
-  return rounds == radii.end() ? 0.0 : (std::max)(0.0, rounds->second - shell_rounds) * voxel_size;
+  return (std::max)(0.0, radius_in(radii, k) - shell_rounds) * voxel_size;
 }
 
 } // namespace internal
@@ -201,7 +200,7 @@ void to_graph(const Voxel_skeleton& skeleton, const VoxelDistanceField& distance
   to_graph(skeleton.voxels, distances, mesh, curve, np);
   for(std::size_t v = 0; v < num_vertices(curve); ++v)
   {
-    const Voxel_key& k = skeleton.radius_voxel(curve[v].voxel);
+    const Voxel_key k = skeleton.radius_voxel(curve[v].voxel);
     curve[v].sheet_half_width = internal::sheet_half_width(skeleton.sheet_radii, k, skeleton.radius_voxel_size);
     curve[v].piece_radius = internal::sheet_half_width(skeleton.piece_sheet_radii, k, skeleton.radius_voxel_size);
   }
