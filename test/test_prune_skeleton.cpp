@@ -398,6 +398,13 @@ BOOST_AUTO_TEST_CASE(the_widest_sheet_of_a_piece_sets_its_level_of_detail)
   BOOST_TEST((contents(pruned_with_sheet(0)) == contents(by_mat_radius)));
   BOOST_TEST(pruned_with_sheet(20).contains(limb_end));
   const gs::Sparse_voxel_set wide = pruned_with_sheet(25);
+  // Absurd thresholds are refused before any work, the skeleton left as it was.
+  gs::Voxel_skeleton untouched;
+  untouched.voxels = voxel_set<gs::Sparse_voxel_set>(voxels);
+  BOOST_CHECK_THROW(gs::prune_skeleton(untouched, field, gs::parameters::limb_protrusion_factor(-1.0)),
+                    std::invalid_argument);
+  BOOST_TEST(untouched.voxels.size() == voxels.size());
+  BOOST_TEST(untouched.piece_sheet_radii.empty());
   BOOST_TEST(!wide.contains(limb_end));
   BOOST_TEST(wide.contains(Voxel_key{-40, 0, 0}));
   BOOST_TEST(wide.contains(Voxel_key{40, 0, 0}));
