@@ -117,11 +117,10 @@ double shortest_bone(const Control& c)
 const auto paper_split = gs::parameters::combine(gs::parameters::maximum_bone_length_factor(0.0),
                                                  gs::parameters::minimum_bone_length_of_piece_factor(0.0));
 
-std::vector<double> accumulation(const std::vector<Point>& points, double L, bool closed = false)
+std::vector<double> accumulation(const std::vector<Point>& points, double L)
 {
   std::vector<double> h;
-  gs::chord_to_point_distance_accumulation(points, L, std::back_inserter(h),
-                                           gs::parameters::closed_polyline(closed));
+  gs::chord_to_point_distance_accumulation(points, L, std::back_inserter(h));
   return h;
 }
 
@@ -339,16 +338,24 @@ BOOST_AUTO_TEST_CASE(accumulation_does_not_depend_on_sampling_rotation_or_scale)
 
 BOOST_AUTO_TEST_CASE(accumulation_on_a_closed_square_peaks_at_its_four_corners)
 {
-  std::vector<Point> square = polyline({Point(0, 0, 0), Point(8, 0, 0), Point(8, 8, 0), Point(0, 8, 0), Point(0, 0, 0)}, 0.5);
-  square.pop_back();
-  const std::vector<double> h = accumulation(square, 3.0, true);
+  // Its last point repeats its first: the polyline is closed, and wraps around its first
+  // corner, which an open polyline (the same points but the last) leaves flat.
+  const std::vector<Point> square =
+      polyline({Point(0, 0, 0), Point(8, 0, 0), Point(8, 8, 0), Point(0, 8, 0), Point(0, 0, 0)}, 0.5);
+  const std::vector<double> h = accumulation(square, 3.0);
+  BOOST_REQUIRE(h.size() == square.size());
+  BOOST_TEST(h.back() == h.front());
+  const std::size_t n = h.size() - 1; // the distinct points
   std::vector<std::size_t> local_maxima;
-  for(std::size_t i = 0; i < h.size(); ++i)
-    if(h[i] > h[(i + h.size() - 1) % h.size()] && h[i] >= h[(i + 1) % h.size()] && h[i] > 0.1)
+  for(std::size_t i = 0; i < n; ++i)
+    if(h[i] > h[(i + n - 1) % n] && h[i] >= h[(i + 1) % n] && h[i] > 0.1)
       local_maxima.push_back(i);
   BOOST_TEST(local_maxima.size() == 4u);
   for(std::size_t i : local_maxima)
     BOOST_TEST(std::fmod(square[i].x(), 8.0) + std::fmod(square[i].y(), 8.0) == 0.0);
+  const std::vector<double> open = accumulation(std::vector<Point>(square.begin(), square.end() - 1), 3.0);
+  BOOST_TEST(open.front() == 0.0);
+  BOOST_TEST(h.front() > 0.1);
 }
 
 BOOST_AUTO_TEST_CASE(accumulation_rejects_bad_chords)

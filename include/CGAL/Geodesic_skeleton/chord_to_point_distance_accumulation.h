@@ -96,6 +96,40 @@ private:
   double m_length = 0, m_offset = 0;
 };
 
+
+// The accumulation h(k) of every point of `p` (finite coordinates), `chords` + 1 chords of
+// arc length L > 0 per point; a `closed` polyline links its last point back to its first.
+template <typename OutputIterator>
+OutputIterator chord_to_point_accumulation(const std::vector<Vec3>& p, double L, bool closed, int chords,
+                                           OutputIterator out)
+{
+  if(p.empty())
+    return out;
+  const Arc_length_polyline line(p, closed);
+  const double total = line.length();
+  std::vector<Arc_length_polyline::Reader> chord_start(chords + 1, line.reader());
+  std::vector<Arc_length_polyline::Reader> chord_end(chords + 1, line.reader());
+  double s_k = 0;
+  for(std::size_t k = 0; k < p.size(); ++k)
+  {
+    if(k > 0)
+      s_k += norm3(sub(p[k], p[k - 1]));
+    double sum = 0;
+    int count = 0;
+    for(int t = 0; t <= chords; ++t)
+    {
+      const double a = s_k - L + L * t / chords;
+      const bool fits = closed ? (L < total) : (a >= -1e-12 * L && a + L <= total + 1e-12 * L);
+      if(!fits)
+        continue;
+      sum += distance_to_line(p[k], chord_start[t].at(a), chord_end[t].at(a + L));
+      ++count;
+    }
+    *out++ = count > 0 ? sum / (L * count) : 0.0;
+  }
+  return out;
+}
+
 } // namespace internal
 
 /// \ingroup PkgGeodesicSkeletonRef
@@ -120,22 +154,18 @@ private:
 /// 45, 0.204 for a right angle (about 16/17 of the mean over all x in [0, 1], 0.058,
 /// 0.080 at 28 degrees, 0.126 and 0.217, which it tends to as c grows); and 0 when no
 /// chord fits (an open polyline shorter than L). On an open polyline chords that would run
-/// past an end are left out; a closed polyline wraps around.
+/// past an end are left out; a closed polyline (whose last point repeats its first, as
+/// CGAL's polylines do) wraps around.
 ///
 /// \tparam PointRange a range of CGAL 3D points (with `x()`, `y()`, `z()`).
 /// \tparam OutputIterator an output iterator accepting `double`.
-/// \param points the polyline, in order (for a closed one, without repeating the first point).
+/// \param points the polyline, in order; when it has at least 3 points and the last equals
+///        the first, it is closed, and the last point's value is the first's.
 /// \param chord_length L, in the polyline's units; finite and positive.
 /// \param out receives one value per point, in order.
 /// \param np an optional sequence of \ref manual_named_parameters "named parameters"
 ///        among the ones listed below:
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{closed_polyline}
-///     \cgalParamDescription{whether the last point links back to the first (package
-///                           parameter)}
-///     \cgalParamType{`bool`}
-///     \cgalParamDefault{`false`}
-///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_chords}
 ///     \cgalParamDescription{c + 1 chords are sampled per point, c in [1, 1000] (package
 ///                           parameter)}
@@ -158,7 +188,6 @@ OutputIterator chord_to_point_distance_accumulation(const PointRange& points, do
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const bool closed = choose_parameter(get_parameter(np, internal_np::closed_polyline_tag), false);
   const int chords = internal::checked_parameter(
       parameter_ranges::number_of_chords,
       choose_parameter(get_parameter(np, internal_np::number_of_chords_tag),
@@ -177,33 +206,16 @@ OutputIterator chord_to_point_distance_accumulation(const PointRange& points, do
         throw std::invalid_argument("chord_to_point_distance_accumulation: a point has a "
                                     "non-finite coordinate");
   }
-  if(p.empty())
-    return out;
-
-  const internal::Arc_length_polyline line(p, closed);
-  const double total = line.length();
-  const double L = chord_length;
-  std::vector<internal::Arc_length_polyline::Reader> chord_start(chords + 1, line.reader());
-  std::vector<internal::Arc_length_polyline::Reader> chord_end(chords + 1, line.reader());
-  double s_k = 0;
-  for(std::size_t k = 0; k < p.size(); ++k)
-  {
-    if(k > 0)
-      s_k += internal::norm3(internal::sub(p[k], p[k - 1]));
-    double sum = 0;
-    int count = 0;
-    for(int t = 0; t <= chords; ++t)
-    {
-      const double a = s_k - L + L * t / chords;
-      const bool fits = closed ? (L < total) : (a >= -1e-12 * L && a + L <= total + 1e-12 * L);
-      if(!fits)
-        continue;
-      sum += internal::distance_to_line(p[k], chord_start[t].at(a), chord_end[t].at(a + L));
-      ++count;
-    }
-    *out++ = count > 0 ? sum / (L * count) : 0.0;
-  }
-  return out;
+  // A closed polyline repeats its first point last: the accumulation wraps around, and the
+  // repeated point gets the first point's value.
+  const bool closed = p.size() >= 3 && p.front() == p.back();
+  if(closed)
+    p.pop_back();
+  std::vector<double> h;
+  internal::chord_to_point_accumulation(p, chord_length, closed, chords, std::back_inserter(h));
+  if(closed)
+    h.push_back(h.front());
+  return std::copy(h.begin(), h.end(), out);
 }
 
 } // namespace Geodesic_skeleton

@@ -60,11 +60,13 @@ namespace Geodesic_skeleton {
 ///         which voxel centres are inside.
 /// \tparam Graph a `boost::adjacency_list` with `vecS` vertices, such as
 ///         `Curve_skeleton<Point, vertex_descriptor>` or
-///         `CGAL::Mean_curvature_flow_skeletonization<FaceGraph>::Skeleton`. Each vertex's
-///         point, radius, mesh vertices and voxel are written through the maps below; by
-///         default through the vertex bundle's members `point`, `radius`, `vertices` and
-///         `voxel`, and a bundle without `radius`, `vertices` or `voxel` member (and no map
-///         given for it) simply does not receive that quantity.
+///         `CGAL::Mean_curvature_flow_skeletonization<FaceGraph>::Skeleton`, whose vertex
+///         bundle has a `point` member (a point type constructible from three `double`s).
+///         Each vertex's point, mesh vertices (a container of the vertex descriptors of
+///         `FaceGraph` constructible from an iterator range) and voxel go to the bundle's
+///         members `point`, `vertices` and `voxel`, its radius to the member `radius` or to
+///         the `mat_radius_map` below; a bundle without such a member (and no map for the
+///         radius) does not receive that quantity.
 /// \param skeleton the voxel skeleton (its frame maps voxels to the mesh's coordinates).
 /// \param distances the distance field of the solid the skeleton was thinned from
 ///        (`distance_transform()`); it gives the radii and the solid for the mapping.
@@ -95,33 +97,12 @@ namespace Geodesic_skeleton {
 ///                       centre is in doubt}
 ///     \cgalParamExtra{It must be in the skeleton's frame.}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{skeleton_point_map}
-///     \cgalParamDescription{receives the point of each vertex of `graph` (package parameter)}
-///     \cgalParamType{a model of `WritablePropertyMap` with the vertex descriptor of `graph`
-///                    as key type and a point type constructible from three `double`s as
-///                    value type}
-///     \cgalParamDefault{the vertex bundle's `point` member (required when the bundle has none)}
-///   \cgalParamNEnd
 ///   \cgalParamNBegin{mat_radius_map}
 ///     \cgalParamDescription{receives the medial radius at each vertex of `graph`, in world
 ///                           units (package parameter)}
 ///     \cgalParamType{a model of `WritablePropertyMap` with the vertex descriptor of `graph`
 ///                    as key type and `double` as value type}
 ///     \cgalParamDefault{the vertex bundle's `radius` member; without one, not written}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{mesh_vertices_map}
-///     \cgalParamDescription{receives the mesh vertices mapped to each vertex of `graph`
-///                           (package parameter)}
-///     \cgalParamType{a model of `WritablePropertyMap` with the vertex descriptor of `graph`
-///                    as key type and, as value type, a container of the vertex descriptors
-///                    of `FaceGraph` constructible from an iterator range}
-///     \cgalParamDefault{the vertex bundle's `vertices` member; without one, not written}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{voxel_map}
-///     \cgalParamDescription{receives the voxel of each vertex of `graph` (package parameter)}
-///     \cgalParamType{a model of `WritablePropertyMap` with the vertex descriptor of `graph`
-///                    as key type and `Voxel_key` as value type}
-///     \cgalParamDefault{the vertex bundle's `voxel` member; without one, not written}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{memory_limit}
 ///     \cgalParamDescription{the most memory the function may allocate, in bytes (package

@@ -18,6 +18,8 @@ CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(number_of_base_vertices)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(resolution)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(memory_limit)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(fill_holes)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(keep_surface_voxels)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(small_piece_fraction)
 
 // thin, reach_sheet_lobes
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(thin_part_radius)
@@ -26,18 +28,20 @@ CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(thin_part_radius)
 // move_skeleton_inside read it
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(voxelized_surface)
 
-// prune_skeleton; smooth_skeleton, split_into_bones, to_graph (the skeleton's radii)
+// the MAT radius of each element of the skeleton a function takes, in that skeleton's own
+// length unit: voxels for prune_skeleton()'s voxel set, world units for the curve skeleton
+// that to_graph() writes and smooth_skeleton() and split_into_bones() read
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(mat_radius_map)
+
+// prune_skeleton (spur_length_factor, limb_protrusion_factor), reach_sheet_lobes
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(spur_length_factor)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(limb_protrusion_factor)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(sheet_lobe_reach_factor)
-
 
 // smooth_skeleton
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(smoothing_window)
 
 // chord_to_point_distance_accumulation
-CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(closed_polyline)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(number_of_chords)
 
 // split_into_bones
@@ -50,26 +54,18 @@ CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(smallest_radius)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(chord_length_factors)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(tip_joint_setback)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(joint_spacing)
-CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(joint_spacing_factor)
 
-// extract_control_skeleton
+// extract_control_skeleton (joint_spacing_factor: split_into_bones()'s joint_spacing in
+// the mesh's longest principal extents)
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(joint_spacing_factor)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(curve_skeleton_output)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(thinned_skeleton_output)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(reeb_graph_output)
-
-// the chain's solid: extract_control_skeleton writes it, compute_skinning_weights reads it
-CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(voxelized_solid)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(number_of_reeb_intervals)
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(level_of_detail_resolution)
 
-// to_graph (the maps of the curve skeleton it writes)
-CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(skeleton_point_map)
-CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(mesh_vertices_map)
-CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(voxel_map)
-
-// voxelize (appended)
-CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(keep_surface_voxels)
-CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(small_piece_fraction)
+// the chain's solid: extract_control_skeleton writes it, compute_skinning_weights reads it
+CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(voxelized_solid)
 
 // compute_skinning_weights
 CGAL_GEODESIC_SKELETON_NAMED_PARAMETER(max_bones_per_vertex)

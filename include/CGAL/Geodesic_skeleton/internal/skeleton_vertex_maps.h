@@ -121,49 +121,37 @@ auto skeleton_radius_map(Graph& skeleton, const NamedParameters& np)
   });
 }
 
-// The maps that to_graph() writes: its `skeleton_point_map`, `mat_radius_map`,
-// `mesh_vertices_map` and `voxel_map` named parameters when given, else the vertex
-// bundle's `point`, `radius`, `vertices` and `voxel` members; a map that is neither given
-// nor a member is No_map (nothing written). The point map is required.
-//
-// Mapping into a graph whose bundle has none of these members (an MCF skeleton has `point`
-// and `vertices`, no `radius` nor `voxel`) is so possible without a wrapper type.
-template <typename Graph, typename NamedParameters>
-auto output_point_map(Graph& skeleton, const NamedParameters& np)
+// The maps that to_graph() writes: the vertex bundle's `point` (required), `vertices` and
+// `voxel` members, and its `radius` member or the `mat_radius_map` named parameter (CGAL's
+// MCF skeleton has `point` and `vertices` members, no `radius`: its radius goes to a map
+// that smooth_skeleton() and split_into_bones() read as well). A quantity with no member
+// and no map is No_map (nothing written).
+template <typename Graph>
+auto output_point_map(Graph& skeleton)
 {
-  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::skeleton_point_map_t>::value)
-    return CGAL::parameters::get_parameter(np, internal_np::skeleton_point_map_tag);
+  using Bundle = vertex_bundle_t<Graph>;
+  static_assert(has_point_member<Bundle>::value, "to_graph(): the graph's vertex bundle has no `point` member");
+  return get(&Bundle::point, skeleton);
+}
+
+template <typename Graph>
+auto output_mesh_vertices_map(Graph& skeleton)
+{
+  using Bundle = vertex_bundle_t<Graph>;
+  if constexpr(has_vertices_member<Bundle>::value)
+    return get(&Bundle::vertices, skeleton);
   else
-  {
-    using Bundle = vertex_bundle_t<Graph>;
-    static_assert(has_point_member<Bundle>::value,
-                  "the skeleton's vertex bundle has no `point` member: give a skeleton_point_map");
-    return get(&Bundle::point, skeleton);
-  }
+    return No_map{};
 }
 
-template <typename Graph, typename NamedParameters>
-auto output_mesh_vertices_map(Graph& skeleton, const NamedParameters& np)
+template <typename Graph>
+auto output_voxel_map(Graph& skeleton)
 {
   using Bundle = vertex_bundle_t<Graph>;
-  return parameter_or_member(np, internal_np::mesh_vertices_map_tag, [&] {
-    if constexpr(has_vertices_member<Bundle>::value)
-      return get(&Bundle::vertices, skeleton);
-    else
-      return No_map{};
-  });
-}
-
-template <typename Graph, typename NamedParameters>
-auto output_voxel_map(Graph& skeleton, const NamedParameters& np)
-{
-  using Bundle = vertex_bundle_t<Graph>;
-  return parameter_or_member(np, internal_np::voxel_map_tag, [&] {
-    if constexpr(has_voxel_member<Bundle>::value)
-      return get(&Bundle::voxel, skeleton);
-    else
-      return No_map{};
-  });
+  if constexpr(has_voxel_member<Bundle>::value)
+    return get(&Bundle::voxel, skeleton);
+  else
+    return No_map{};
 }
 
 // The four maps to_graph() writes a curve skeleton's vertices through.
@@ -181,10 +169,10 @@ struct Curve_skeleton_output_maps
 template <typename Graph, typename NamedParameters>
 auto curve_skeleton_output_maps(Graph& skeleton, const NamedParameters& np)
 {
-  auto points = output_point_map(skeleton, np);
+  auto points = output_point_map(skeleton);
   auto radii = skeleton_radius_map(skeleton, np);
-  auto mesh_vertices = output_mesh_vertices_map(skeleton, np);
-  auto voxels = output_voxel_map(skeleton, np);
+  auto mesh_vertices = output_mesh_vertices_map(skeleton);
+  auto voxels = output_voxel_map(skeleton);
   return Curve_skeleton_output_maps<decltype(points), decltype(radii), decltype(mesh_vertices), decltype(voxels)>{
       points, radii, mesh_vertices, voxels};
 }

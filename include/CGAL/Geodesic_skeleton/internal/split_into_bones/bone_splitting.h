@@ -9,7 +9,6 @@
 #include <CGAL/Geodesic_skeleton/chord_to_point_distance_accumulation.h>
 #include <CGAL/Geodesic_skeleton/internal/vec3.h>
 
-#include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
 #include <cmath>
@@ -146,7 +145,8 @@ private:
       if(!(L > 0))
         continue;
       std::vector<double> h;
-      chord_to_point_distance_accumulation(as_points(part), L, std::back_inserter(h));
+      chord_to_point_accumulation(part, L, false, static_cast<int>(parameter_ranges::number_of_chords.default_value),
+                                  std::back_inserter(h));
       for(std::size_t k = 0; k < h.size(); ++k)
         bend[k] += h[k] / static_cast<double>(m_settings.chord_length_factors.size());
     }
@@ -228,15 +228,6 @@ private:
       cuts.push_back(best);
       previous = best;
     }
-  }
-
-  static std::vector<CGAL::Simple_cartesian<double>::Point_3> as_points(const std::vector<Vec3>& v)
-  {
-    std::vector<CGAL::Simple_cartesian<double>::Point_3> out;
-    out.reserve(v.size());
-    for(const Vec3& p : v)
-      out.emplace_back(p[0], p[1], p[2]);
-    return out;
   }
 
   const std::vector<Vec3>& m_p;
