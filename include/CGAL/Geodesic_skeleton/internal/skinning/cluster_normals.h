@@ -11,6 +11,7 @@
 // get the same weights.
 
 #include <CGAL/Geodesic_skeleton/internal/skinning/surface_clusters.h>
+#include <CGAL/Geodesic_skeleton/internal/union_find.h>
 #include <CGAL/Geodesic_skeleton/internal/vec3.h>
 
 #include <array>

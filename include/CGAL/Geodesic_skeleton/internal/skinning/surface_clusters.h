@@ -18,6 +18,7 @@
 // with their gradient there (a least-squares fit over the neighbouring clusters), so that the
 // weights vary smoothly across the clusters instead of in steps.
 
+#include <CGAL/Geodesic_skeleton/internal/union_find.h>
 #include <CGAL/Geodesic_skeleton/internal/vec3.h>
 
 #include <algorithm>
@@ -58,17 +59,6 @@ inline std::uint64_t cell_key_of(const Vec3& g)
     return std::uint64_t(clamped);
   };
   return coordinate(g[0]) | coordinate(g[1]) << 21 | coordinate(g[2]) << 42;
-}
-
-// The root of `x` in a union-find forest, halving the path.
-inline std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t x)
-{
-  while(parent[x] != x)
-  {
-    parent[x] = parent[parent[x]];
-    x = parent[x];
-  }
-  return x;
 }
 
 // Clusters the vertices `points` (grid coordinates) of `triangles` by cell and by the edges

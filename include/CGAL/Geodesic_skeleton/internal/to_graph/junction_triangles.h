@@ -5,6 +5,7 @@
 #define CGAL_GEODESIC_SKELETON_INTERNAL_JUNCTION_TRIANGLES_H
 
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
+#include <CGAL/Geodesic_skeleton/internal/union_find.h>
 
 #include <algorithm>
 #include <array>
@@ -253,11 +254,7 @@ inline std::vector<bool> remove_junction_triangles(const std::vector<Voxel_key>&
   // Clusters of edge-sharing triangles (union-find over edges).
   std::vector<int> parent(edges.size());
   std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int x) {
-    while(parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  auto find = [&](int x) { return find_root(parent, x); };
   for(const auto& t : triangles)
   {
     parent[find(t[1])] = find(t[0]);
