@@ -530,9 +530,9 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
   const Mesh mesh = read_mesh(input, file_numbering);
   Mesh_summary summary;
   summary.read_ms = milliseconds_since(start);
-  // The JSON's "mesh" entry (its parts and border edges: a pass over every edge, a tenth of
-  // the chain's time at 3M faces) is counted on the second core while the chain runs on the
-  // first (a batch already keeps every core busy with meshes).
+  // The JSON's "mesh" entry (its parts and border edges: a union-find over every edge, long
+  // on a large mesh) is counted on the second core while the chain runs on the first (a
+  // batch already keeps every core busy with meshes).
   std::future<nlohmann::json> mesh_entry =
       std::async(o.batch.empty() && to_json ? std::launch::async : std::launch::deferred, [&mesh] { return mesh_json(mesh); });
   gs::Curve_skeleton<Point, vertex_descriptor> curve, thinned;

@@ -856,6 +856,12 @@ BOOST_AUTO_TEST_CASE(bad_parameters_throw)
     BOOST_CHECK_THROW(gs::split_into_bones(bad_sheet, c), std::invalid_argument);
     BOOST_CHECK_THROW(gs::split_into_bones(bad_piece, c), std::invalid_argument);
   }
+  for(double bad : {std::nan(""), HUGE_VAL})
+  {
+    Skeleton bad_point = s;
+    bad_point[3].point = Point(0, bad, 0);
+    BOOST_CHECK_THROW(gs::split_into_bones(bad_point, c), std::invalid_argument);
+  }
   Skeleton empty;
   gs::split_into_bones(empty, c);
   BOOST_TEST((num_vertices(c) == 0));

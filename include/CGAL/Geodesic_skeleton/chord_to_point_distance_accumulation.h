@@ -96,7 +96,6 @@ private:
   double m_length = 0, m_offset = 0;
 };
 
-
 // The accumulation h(k) of every point of `p` (finite coordinates), `chords` + 1 chords of
 // arc length L > 0 per point; a `closed` polyline links its last point back to its first.
 template <typename OutputIterator>

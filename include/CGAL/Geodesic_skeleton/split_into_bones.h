@@ -219,8 +219,9 @@ inline double default_joint_spacing(double voxel_size, int resolution,
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// \throws std::invalid_argument when a parameter is out of range, or the radius map, a
-///         vertex's `sheet_half_width` or its `piece_radius` is negative or not finite.
+/// \throws std::invalid_argument when a parameter is out of range, a point has a non-finite
+///         coordinate, or the radius map, a vertex's `sheet_half_width` or its
+///         `piece_radius` is negative or not finite.
 ///
 /// \b Complexity: O(N log N * c) for N skeleton vertices and c chords per point in
 /// practice (each recursion level scans its part), plus O(J B log B) to root the J joints

@@ -97,28 +97,18 @@ auto skeleton_point_map(Graph& skeleton, const NamedParameters& np)
 struct No_map
 {};
 
-// The named parameter `tag` of `np` when given, else `member_map()`.
-template <typename Tag, typename NamedParameters, typename MemberMap>
-auto parameter_or_member(const NamedParameters& np, Tag tag, MemberMap member_map)
-{
-  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, Tag>::value)
-    return CGAL::parameters::get_parameter(np, tag);
-  else
-    return member_map();
-}
-
 // The `mat_radius_map` of `np`, else get(&Bundle::radius, skeleton), else No_map
 // (exactly when has_radius_map<Graph, NamedParameters>() is false).
 template <typename Graph, typename NamedParameters>
 auto skeleton_radius_map(Graph& skeleton, const NamedParameters& np)
 {
   using Bundle = vertex_bundle_t<Graph>;
-  return parameter_or_member(np, internal_np::mat_radius_map_tag, [&] {
-    if constexpr(has_radius_member<Bundle>::value)
-      return get(&Bundle::radius, skeleton);
-    else
-      return No_map{};
-  });
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::mat_radius_map_t>::value)
+    return CGAL::parameters::get_parameter(np, internal_np::mat_radius_map_tag);
+  else if constexpr(has_radius_member<Bundle>::value)
+    return get(&Bundle::radius, skeleton);
+  else
+    return No_map{};
 }
 
 // The maps that to_graph() writes: the vertex bundle's `point` (required), `vertices` and

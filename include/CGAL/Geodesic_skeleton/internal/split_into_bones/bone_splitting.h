@@ -9,7 +9,6 @@
 #include <CGAL/Geodesic_skeleton/chord_to_point_distance_accumulation.h>
 #include <CGAL/Geodesic_skeleton/internal/vec3.h>
 
-
 #include <algorithm>
 #include <cmath>
 #include <cstddef>

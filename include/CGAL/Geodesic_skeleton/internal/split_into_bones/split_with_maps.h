@@ -131,7 +131,7 @@ Split_length_maps split_length_maps(const CurveSkeleton& skeleton)
 
 // Algorithm 2 on a skeleton read through its point and radius maps: the body of
 // split_into_bones(), with the settings checked and `control` cleared; throws when a
-// radius is negative or not finite. Each of `lengths` is empty or has one value per vertex.
+// radius is negative or not finite, or a point not finite. Each of `lengths` is empty or has one value per vertex.
 template <typename CurveSkeleton, typename VertexPointMap, typename RadiusMap, typename Point>
 void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPointMap& point_map,
                                 const RadiusMap& radius_map, const Split_length_maps& lengths,
@@ -161,6 +161,10 @@ void split_into_bones_with_maps(const CurveSkeleton& skeleton, const VertexPoint
     const auto p = get(point_map, v);
     return Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
   };
+  for(std::size_t v = 0; v < n; ++v)
+    for(double c : position(v))
+      if(!std::isfinite(c))
+        throw std::invalid_argument("split_into_bones: a vertex's point has a non-finite coordinate");
   auto add_joint = [&](std::size_t v, Joint_kind kind) {
     if(joint_of[v] < 0)
     {
