@@ -15,6 +15,7 @@
 #include <CGAL/Geodesic_skeleton/thin.h>
 #include <CGAL/Geodesic_skeleton/to_graph.h>
 #include <CGAL/Geodesic_skeleton/voxelize.h>
+#include <CGAL/Geodesic_skeleton/internal/medial_path_search.h>
 
 #include <Geodesic_skeleton_test/shapes.h>
 #include <Geodesic_skeleton_test/voxel_archetypes.h>
@@ -243,6 +244,50 @@ BOOST_AUTO_TEST_CASE(a_frame_must_be_orthonormal_right_handed_and_positive)
                     std::invalid_argument);
   BOOST_CHECK_THROW(gs::Voxel_frame({NAN, 0., 0.}, A{{{1., 0., 0.}, {0., 1., 0.}, {0., 0., 1.}}}, 1.),
                     std::invalid_argument);
+}
+
+// The shared search of the routing and the sheet lobes, in a 9 x 9 x 1 box: a wall at x = 4
+// with one gap at y = 8 (the top row).
+BOOST_AUTO_TEST_CASE(the_medial_path_search_finds_the_cheapest_path_around_a_wall)
+{
+  using Key = gs::Voxel_key;
+  const gs::internal::Grid_layout layout(gs::Voxel_box{Key{0, 0, 0}, Key{9, 9, 1}});
+  auto wall = [](const Key& k) { return k.x == 4 && k.y != 8; };
+  auto step = [&](const Key& from, std::uint8_t, const Key& next, std::size_t) {
+    return wall(next) ? std::nullopt : std::optional<double>(gs::internal::step_length(from, next));
+  };
+  const Key start{0, 0, 0}, goal{8, 0, 0};
+  auto is_goal = [&](const Key& k) { return k == goal; };
+  auto no_estimate = [](const Key&) { return 0.; };
+  auto straight_line = [&](const Key& k) { return std::sqrt(double(gs::internal::squared_distance_between(k, goal))); };
+  gs::internal::Medial_path_search<double> search;
+  const std::vector<Key> dijkstra = search.cheapest_path(layout, start, is_goal, step, no_estimate);
+  const std::vector<Key> a_star = search.cheapest_path(layout, start, is_goal, step, straight_line);
+  auto cost = [](const std::vector<Key>& path) {
+    double sum = 0;
+    for(std::size_t i = 1; i < path.size(); ++i)
+      sum += gs::internal::step_length(path[i - 1], path[i]);
+    return sum;
+  };
+  BOOST_REQUIRE(!dijkstra.empty());
+  BOOST_CHECK(dijkstra.front() == start);
+  BOOST_CHECK(dijkstra.back() == goal);
+  for(std::size_t i = 0; i < dijkstra.size(); ++i)
+  {
+    BOOST_CHECK(!wall(dijkstra[i]));
+    if(i > 0)
+      BOOST_CHECK(gs::internal::squared_distance_between(dijkstra[i - 1], dijkstra[i]) <= 3);
+  }
+  // Up to the gap and down again, 4 diagonal and 4 straight steps each way.
+  BOOST_CHECK_CLOSE(cost(dijkstra), 8 + 8 * std::sqrt(2.), 1e-9);
+  BOOST_CHECK_CLOSE(cost(a_star), cost(dijkstra), 1e-9);
+  // The search cleared its arrays: the same search again finds the same path.
+  BOOST_CHECK(search.cheapest_path(layout, start, is_goal, step, no_estimate) == dijkstra);
+  // Sealed off (the gap closed), there is no path.
+  auto sealed = [&](const Key& from, std::uint8_t, const Key& next, std::size_t) {
+    return next.x == 4 ? std::nullopt : std::optional<double>(gs::internal::step_length(from, next));
+  };
+  BOOST_CHECK(search.cheapest_path(layout, start, is_goal, sealed, no_estimate).empty());
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -10,6 +10,7 @@
 
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
+#include <CGAL/Geodesic_skeleton/internal/medial_path_search.h>
 #include <CGAL/Geodesic_skeleton/internal/thin/grassfire.h>
 #include <CGAL/Geodesic_skeleton/internal/voxel_components.h>
 
@@ -18,9 +19,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <functional>
-#include <limits>
-#include <queue>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -52,11 +51,6 @@ public:
     const std::vector<std::uint32_t> sheet = grow_sheet_from_skeleton();
     sheet_voxels = sheet.size();
     std::vector<Out_of_reach> out = out_of_reach(sheet, reach_factor);
-    if(!out.empty())
-    {
-      m_cost.assign(m_layout.volume(), std::numeric_limits<double>::infinity());
-      m_previous.assign(m_layout.volume(), 0);
-    }
     while(!out.empty())
     {
       // The farthest in units of its piece's radius; ties to the smallest key.
@@ -224,53 +218,20 @@ private:
   }
 
   // The path of least sum of step length / r^2 through the solid from `tip` to the first
-  // skeleton voxel (excluded): along the middle of the plate, where the balls are largest.
+  // skeleton voxel (excluded), from that voxel's neighbour back to `tip`: along the middle of
+  // the plate, where the balls are largest.
   std::vector<std::uint32_t> medial_path_to_skeleton(std::uint32_t tip)
   {
-    using Entry = std::pair<double, std::uint32_t>;
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-    std::vector<std::uint32_t> touched{tip};
-    m_cost[tip] = 0;
-    m_previous[tip] = tip;
-    queue.push({0., tip});
+    auto on_skeleton = [&](const Voxel_key& k) { return m_label[m_layout.index(k)] == skeleton_label; };
+    auto step_cost = [&](const Voxel_key&, std::uint8_t o, const Voxel_key& next, std::size_t) {
+      const std::uint32_t d2 = m_distances.squared_distance(next); // 0 outside the solid
+      return d2 == 0 ? std::nullopt : std::optional<double>(m_step_lengths[o] / double(d2));
+    };
+    const std::vector<Voxel_key> keys =
+        m_search.cheapest_path(m_layout, m_layout.key(tip), on_skeleton, step_cost, [](const Voxel_key&) { return 0.; });
     std::vector<std::uint32_t> path;
-    while(!queue.empty())
-    {
-      const auto [cost, v] = queue.top();
-      queue.pop();
-      if(cost > m_cost[v])
-        continue;
-      if(m_label[v] == skeleton_label)
-      {
-        for(std::uint32_t u = m_previous[v]; ; u = m_previous[u])
-        {
-          path.push_back(u);
-          if(u == tip)
-            break;
-        }
-        break;
-      }
-      const Voxel_key k = m_layout.key(v);
-      for(std::size_t b = 0; b < 26; ++b)
-      {
-        const Voxel_key n = k + neighbourhood_26()[b];
-        const std::uint32_t d2 = m_distances.squared_distance(n); // 0 outside the box and the solid
-        if(d2 == 0)
-          continue;
-        const std::uint32_t j = std::uint32_t(m_layout.index(n));
-        const double c = cost + m_step_lengths[b] / double(d2);
-        if(c < m_cost[j])
-        {
-          if(m_cost[j] == std::numeric_limits<double>::infinity())
-            touched.push_back(j);
-          m_cost[j] = c;
-          m_previous[j] = v;
-          queue.push({c, j});
-        }
-      }
-    }
-    for(std::uint32_t t : touched)
-      m_cost[t] = std::numeric_limits<double>::infinity();
+    for(std::size_t i = keys.size(); i-- > 1;)
+      path.push_back(std::uint32_t(m_layout.index(keys[i - 1])));
     return path;
   }
 
@@ -287,8 +248,7 @@ private:
   std::vector<std::uint32_t> m_padded_d2; // the squared distances over the padded box
   std::array<std::ptrdiff_t, 26> m_padded_offsets;
   std::array<double, 26> m_step_lengths;
-  std::vector<double> m_cost;
-  std::vector<std::uint32_t> m_previous;
+  Medial_path_search<double> m_search;
 };
 
 } // namespace internal

@@ -13,6 +13,7 @@
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/Voxel_skeleton.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
+#include <CGAL/Geodesic_skeleton/internal/medial_path_search.h>
 #include <CGAL/Geodesic_skeleton/internal/skeleton_branches.h>
 #include <CGAL/Geodesic_skeleton/internal/to_graph/skeleton_adjacency.h>
 #include <CGAL/Geodesic_skeleton/internal/vec3.h>
@@ -26,9 +27,9 @@
 #include <cstdlib>
 #include <array>
 #include <deque>
-#include <queue>
 #include <climits>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <unordered_map>
 #include <utility>
@@ -268,12 +269,8 @@ private:
   // What the router knows of a voxel of the window of the branch it routes; all zero at first.
   struct Cell
   {
-    float cost;                  // of the search, when reached
     std::int32_t label_plus_two; // the label of its coarser voxel plus 2, once read; 0 before
     std::uint8_t off_skeleton;   // that voxel's steps from the coarser skeleton
-    std::uint8_t step_in;        // the offset the search reached it by, plus 1; 0 for none
-    bool reached;                // by the search
-    bool closed;                 // taken by the search
     bool near_skeleton;          // a skeleton voxel or a neighbour of one
     bool avoided;                // next to a leg of the branch that is not on the skeleton yet
   };
@@ -325,76 +322,6 @@ private:
       m_cells[i].off_skeleton = std::uint8_t(m_labels.steps_at(coarse));
     }
     return m_cells[i].label_plus_two - 2;
-  }
-
-  // The cheapest path from `start` to the first voxel that `is_goal` accepts through the
-  // voxels that `passable` accepts (by index in the finer box), each step costing its length
-  // over the MAT radius of the voxel it enters; A* with the consistent estimate `estimate`.
-  // Returns the path from `start` to the goal, both included, or nothing.
-  template <typename IsGoal, typename Passable, typename Estimate>
-  std::vector<Voxel_key> search(const Voxel_key& start, const IsGoal& is_goal, const Passable& passable,
-                                const Estimate& estimate)
-  {
-    using Queued = std::pair<double, Voxel_key>;
-    std::priority_queue<Queued, std::vector<Queued>, std::greater<Queued>> queue;
-    std::vector<std::size_t> touched{m_layout.index(start)};
-    m_cells[touched[0]].cost = 0;
-    m_cells[touched[0]].reached = true;
-    queue.push({estimate(start), start});
-    std::vector<Voxel_key> path;
-    const auto& offsets = neighbourhood_26();
-    while(!queue.empty())
-    {
-      const auto [bound, k] = queue.top();
-      queue.pop();
-      const std::size_t at = m_layout.index(k);
-      if(m_cells[at].closed)
-        continue; // reached more cheaply since it was queued
-      m_cells[at].closed = true;
-      if(is_goal(k))
-      {
-        for(Voxel_key v = k;;)
-        {
-          path.push_back(v);
-          const std::uint8_t step_plus_one = m_cells[m_layout.index(v)].step_in;
-          if(step_plus_one == 0)
-            break;
-          const std::uint8_t step = std::uint8_t(step_plus_one - 1);
-          v = Voxel_key{v.x - offsets[step].x, v.y - offsets[step].y, v.z - offsets[step].z};
-        }
-        std::reverse(path.begin(), path.end());
-        break;
-      }
-      for(std::uint8_t o = 0; o < offsets.size(); ++o)
-      {
-        const Voxel_key next = k + offsets[o];
-        if(!m_layout.box.contains(next))
-          continue;
-        const std::size_t i = m_layout.index(next);
-        Cell& cell = m_cells[i];
-        if(cell.closed || !passable(i, next))
-          continue;
-        // Off the coarser skeleton's voxels a step costs twice as much: where the MAT radius is
-        // flat (across a sheet, along a slab) the branch keeps to where the coarser grid put it.
-        const float through_k =
-            m_cells[at].cost + float(step_cost_through_the_middle(m_fine, k, next) * (1 + cell.off_skeleton));
-        if(!cell.reached || through_k < cell.cost)
-        {
-          if(!cell.reached)
-            touched.push_back(i);
-          cell.reached = true;
-          cell.cost = through_k;
-          cell.step_in = std::uint8_t(o + 1);
-          queue.push({through_k + estimate(next), next});
-        }
-      }
-    }
-    for(std::size_t i : touched)
-    {
-      m_cells[i].reached = m_cells[i].closed = false;
-      m_cells[i].step_in = 0;
-    }
-    return path;
   }
 
   // Removes, end point by end point, the branches of the routed skeleton that end elsewhere
@@ -602,7 +529,15 @@ private:
     auto estimate = [&](const Voxel_key& k) {
       return (std::max)(0.0, std::sqrt(double(squared_distance_between(k, goal))) - reach) / largest_radius;
     };
-    return search(start, is_goal, passable, estimate);
+    // Each step costs its length over the MAT radius of the voxel it enters, twice that off
+    // the coarser skeleton's voxels: where the MAT radius is flat (across a sheet, along a
+    // slab) the branch keeps to where the coarser grid put it.
+    auto step_cost = [&](const Voxel_key& k, std::uint8_t, const Voxel_key& next, std::size_t i) {
+      return passable(i, next)
+                 ? std::optional<float>(float(step_cost_through_the_middle(m_fine, k, next) * (1 + m_cells[i].off_skeleton)))
+                 : std::nullopt;
+    };
+    return m_search.cheapest_path(m_layout, start, is_goal, step_cost, estimate);
   }
 
   // Adds the voxels of `path`, each standing for the voxel of `coarse_path` at the same
@@ -644,6 +579,7 @@ private:
   const Nearest_branch_labels m_labels;
   Grid_layout m_layout{Voxel_box{}};         // the window of the branch being routed
   std::vector<Cell> m_cells;                 // per voxel of the window
+  Medial_path_search<float> m_search;
   std::vector<int> m_allowed;                // per label: the branch being routed that may pass it
   std::vector<Voxel_key> m_fine_node;
   std::vector<double> m_node_radius;
