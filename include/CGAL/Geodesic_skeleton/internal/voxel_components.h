@@ -106,6 +106,30 @@ std::unordered_map<Voxel_key, double, Voxel_key_hash> largest_radius_of_pieces(c
   return of_voxel;
 }
 
+// Whether the voxels of `keys` are 26-connected among themselves.
+inline bool are_26_connected(const std::vector<Voxel_key>& keys)
+{
+  if(keys.empty())
+    return true;
+  std::vector<bool> reached(keys.size(), false);
+  std::vector<std::size_t> stack{0};
+  reached[0] = true;
+  std::size_t count = 1;
+  while(!stack.empty())
+  {
+    const std::size_t a = stack.back();
+    stack.pop_back();
+    for(std::size_t b = 0; b < keys.size(); ++b)
+      if(!reached[b] && are_26_adjacent(keys[a], keys[b]))
+      {
+        reached[b] = true;
+        ++count;
+        stack.push_back(b);
+      }
+  }
+  return count == keys.size();
+}
+
 } // namespace internal
 } // namespace Geodesic_skeleton
 } // namespace CGAL

@@ -13,6 +13,7 @@
 #include <CGAL/Geodesic_skeleton/internal/cut_spurious_cycles/distance_from_the_middle.h>
 #include <CGAL/Geodesic_skeleton/internal/cut_spurious_cycles/spurious_cycles.h>
 #include <CGAL/Geodesic_skeleton/internal/to_graph/skeleton_adjacency.h>
+#include <CGAL/Geodesic_skeleton/internal/voxel_components.h>
 
 #include <algorithm>
 #include <array>
@@ -37,30 +38,6 @@ inline const std::array<Voxel_key, 26>& offsets_by_length()
     return o;
   }();
   return offsets;
-}
-
-// Whether the voxels of `keys` are 26-connected among themselves.
-inline bool are_26_connected(const std::vector<Voxel_key>& keys)
-{
-  if(keys.empty())
-    return true;
-  std::vector<bool> reached(keys.size(), false);
-  std::vector<std::size_t> stack{0};
-  reached[0] = true;
-  std::size_t count = 1;
-  while(!stack.empty())
-  {
-    const std::size_t a = stack.back();
-    stack.pop_back();
-    for(std::size_t b = 0; b < keys.size(); ++b)
-      if(!reached[b] && are_26_adjacent(keys[a], keys[b]))
-      {
-        reached[b] = true;
-        ++count;
-        stack.push_back(b);
-      }
-  }
-  return count == keys.size();
 }
 
 // Whether moving skeleton voxel `from` to its free neighbour `to` separates the curve

@@ -16,6 +16,7 @@
 #include <CGAL/Geodesic_skeleton/internal/medial_path_search.h>
 #include <CGAL/Geodesic_skeleton/internal/skeleton_branches.h>
 #include <CGAL/Geodesic_skeleton/internal/to_graph/skeleton_adjacency.h>
+#include <CGAL/Geodesic_skeleton/internal/voxel_components.h>
 #include <CGAL/Geodesic_skeleton/internal/vec3.h>
 
 #include <boost/graph/adjacency_list.hpp>
@@ -393,25 +394,7 @@ private:
     for(const Voxel_key& offset : neighbourhood_26())
       if(skeleton.contains(k + offset))
         touched.push_back(k + offset);
-    if(touched.size() < 2)
-      return true;
-    std::vector<bool> in_group(touched.size(), false);
-    std::vector<std::size_t> stack{0};
-    in_group[0] = true;
-    std::size_t grouped = 1;
-    while(!stack.empty())
-    {
-      const Voxel_key a = touched[stack.back()];
-      stack.pop_back();
-      for(std::size_t b = 0; b < touched.size(); ++b)
-        if(!in_group[b] && squared_distance_between(a, touched[b]) <= 3)
-        {
-          in_group[b] = true;
-          ++grouped;
-          stack.push_back(b);
-        }
-    }
-    return grouped == touched.size();
+    return are_26_connected(touched);
   }
 
   bool near_node(const Voxel_key& k, int node) const

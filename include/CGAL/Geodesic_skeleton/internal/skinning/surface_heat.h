@@ -97,6 +97,7 @@ template <typename FaceGraph, typename VertexIndexMap>
 std::vector<std::array<std::uint32_t, 3>> triangles_of(const FaceGraph& mesh, const VertexIndexMap& vim)
 {
   std::vector<std::array<std::uint32_t, 3>> triangles;
+  triangles.reserve(num_faces(mesh)); // one per face of a triangle mesh
   std::vector<std::uint32_t> corners;
   for(auto f : faces(mesh))
   {
@@ -214,11 +215,14 @@ struct Cluster_weights
   std::vector<std::uint32_t> first, bone;
   std::vector<double> weight;
 
-  double of(std::uint32_t c, std::uint32_t b) const
+  // The weight of bone `b` at the cluster whose weights from `at` on are still to be read,
+  // `at` moved past the bones below `b`: a walk over the cluster's bones, in increasing order.
+  double of(std::uint32_t c, std::uint32_t b, std::uint32_t& at) const
   {
-    const auto begin = bone.begin() + first[c], end = bone.begin() + first[c + 1];
-    const auto it = std::lower_bound(begin, end, b);
-    return it != end && *it == b ? weight[std::size_t(it - bone.begin())] : 0.;
+    const std::uint32_t end = first[c + 1];
+    while(at < end && bone[at] < b)
+      ++at;
+    return at < end && bone[at] == b ? weight[at] : 0.;
   }
 };
 
@@ -323,6 +327,7 @@ inline Linear_cluster_weights linear_cluster_weights(const std::vector<Vec3>& po
   out.first.assign(m + 1, 0);
   std::vector<Linear_weight>& linear = out.weights;
   std::vector<Vec3> k_of_neighbour;
+  std::vector<std::uint32_t> read_at; // per neighbour of the cluster: where its weights are read
   std::vector<double> lowest;
   for(std::uint32_t c = 0; c < m; ++c)
   {
@@ -330,6 +335,10 @@ inline Linear_cluster_weights linear_cluster_weights(const std::vector<Vec3>& po
     if(clusters.size[c] > 1)
       gradient_weights(clusters, c, k_of_neighbour);
     const double r = std::sqrt(reach[c]);
+    const std::uint32_t* neighbour = clusters.neighbours.data() + clusters.first_neighbour[c];
+    read_at.resize(k_of_neighbour.size());
+    for(std::uint32_t j = 0; j < k_of_neighbour.size(); ++j)
+      read_at[j] = cluster_weights.first[neighbour[j]];
     for(std::uint32_t i = cluster_weights.first[c]; i < cluster_weights.first[c + 1]; ++i)
     {
       const std::uint32_t b = cluster_weights.bone[i];
@@ -337,7 +346,7 @@ inline Linear_cluster_weights linear_cluster_weights(const std::vector<Vec3>& po
       Vec3 gradient{0, 0, 0};
       for(std::uint32_t j = 0; j < k_of_neighbour.size(); ++j)
       {
-        const double difference = cluster_weights.of(clusters.neighbours[clusters.first_neighbour[c] + j], b) - w;
+        const double difference = cluster_weights.of(neighbour[j], b, read_at[j]) - w;
         for(std::size_t x = 0; x < 3; ++x)
           gradient[x] += k_of_neighbour[j][x] * difference;
       }
