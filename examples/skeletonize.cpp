@@ -293,7 +293,8 @@ void compute_skinning(const Options& o, const std::string& input, const gs::Cont
     skinning.report = skeletonize_settings::compute_skinning_weights(
         mesh, control, o, solid,
         boost::make_iterator_property_map(skinning.weights.begin(), get(CGAL::vertex_index, mesh)),
-        boost::make_iterator_property_map(skinning.segment.begin(), get(CGAL::vertex_index, mesh)));
+        boost::make_iterator_property_map(skinning.segment.begin(), get(CGAL::vertex_index, mesh)),
+        o.batch.empty()); // a batch keeps every core busy with meshes already
   }
   catch(const std::exception& e)
   {

@@ -190,20 +190,22 @@ gs::Control_skeleton_report extract_control_skeleton(const Mesh& mesh, gs::Contr
 }
 
 // gs::compute_skinning_weights() with the settings `s` as its named parameters; `solid`:
-// the chain's voxelization of the mesh at `s.resolution`, or null to voxelize again.
+// the chain's voxelization of the mesh at `s.resolution`, or null to voxelize again;
+// `parallel`: on all the cores (CGAL::Parallel_tag), else on the caller's thread.
 template <typename Mesh, typename Point, typename WeightMap, typename SegmentMap>
 gs::Skinning_report compute_skinning_weights(const Mesh& mesh, const gs::Control_skeleton<Point>& control,
                                              const Settings& s, const gs::Dense_voxel_grid* solid,
-                                             WeightMap weights, SegmentMap segment)
+                                             WeightMap weights, SegmentMap segment, bool parallel)
 {
   namespace params = CGAL::Geodesic_skeleton::parameters;
-  return gs::compute_skinning_weights(
-      mesh, control, weights,
+  const auto np =
       params::combine(params::resolution(s.resolution), params::fill_holes(s.fill_holes),
                       params::keep_surface_voxels(s.keep_surface_voxels), params::voxelized_solid(solid),
                       params::max_bones_per_vertex(s.max_bones_per_vertex), params::sharpness(s.sharpness),
                       params::minimum_weight(s.minimum_weight), params::influence_ratio(s.influence_ratio),
-                      params::bone_segmentation_map(segment)));
+                      params::bone_segmentation_map(segment));
+  return parallel ? gs::compute_skinning_weights<CGAL::Parallel_tag>(mesh, control, weights, np)
+                  : gs::compute_skinning_weights<CGAL::Sequential_tag>(mesh, control, weights, np);
 }
 
 } // namespace skeletonize_settings

@@ -555,7 +555,8 @@ py::object weights_of_mesh(const Input_mesh& input, const Rig& rig, bool sparse,
     std::vector<int> segment(num_vertices(input.mesh), -1);
     settings::compute_skinning_weights(input.mesh, rig.control, s, nullptr,
                                        boost::make_iterator_property_map(w.begin(), get(CGAL::vertex_index, input.mesh)),
-                                       boost::make_iterator_property_map(segment.begin(), get(CGAL::vertex_index, input.mesh)));
+                                       boost::make_iterator_property_map(segment.begin(), get(CGAL::vertex_index, input.mesh)),
+                                       true);
     return w;
   });
   const std::size_t rows = input.vertex_of_row.size(), bones = rig.bones();

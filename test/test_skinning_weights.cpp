@@ -490,4 +490,32 @@ BOOST_AUTO_TEST_CASE(bad_parameters_and_skeletons_are_refused)
   BOOST_CHECK_THROW(weights_of(mesh, bad_point, CGAL::parameters::default_values()), std::invalid_argument);
 }
 
+BOOST_AUTO_TEST_CASE(the_weights_are_the_same_on_one_thread_and_on_all)
+{
+  // 24 x 401 vertices and 3 bones: past the size at which the passes over the vertices and
+  // the clusters are split between threads.
+  const Mesh mesh = shapes::mesh_of<Mesh>(shapes::cylinder(1, 20, 24, 400, true));
+  const Control control = chain_skeleton({Point(0, 0, 1), Point(0, 0, 7), Point(0, 0, 14), Point(0, 0, 19)});
+  BOOST_REQUIRE_GT(num_vertices(mesh), 8192u);
+  std::vector<gs::Bone_weights> sequential(num_vertices(mesh)), parallel(num_vertices(mesh));
+  const auto index = get(CGAL::vertex_index, mesh);
+  gs::compute_skinning_weights<CGAL::Sequential_tag>(
+      mesh, control, boost::make_iterator_property_map(sequential.begin(), index), params::resolution(96));
+  gs::compute_skinning_weights<CGAL::Parallel_tag>(mesh, control,
+                                                   boost::make_iterator_property_map(parallel.begin(), index),
+                                                   params::resolution(96));
+  std::size_t blended = 0;
+  for(std::size_t v = 0; v < sequential.size(); ++v)
+  {
+    BOOST_REQUIRE_EQUAL(sequential[v].size(), parallel[v].size());
+    blended += sequential[v].size() > 1;
+    for(std::size_t i = 0; i < sequential[v].size(); ++i)
+    {
+      BOOST_REQUIRE_EQUAL(sequential[v].bone[i], parallel[v].bone[i]);
+      BOOST_REQUIRE_EQUAL(sequential[v].weight[i], parallel[v].weight[i]);
+    }
+  }
+  BOOST_CHECK_GT(blended, 0u); // the bones share vertices around the joints
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -14,6 +14,7 @@
 #include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
 #include <CGAL/Geodesic_skeleton/distance_transform.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
+#include <CGAL/Geodesic_skeleton/internal/parallel_parts.h>
 #include <CGAL/Geodesic_skeleton/internal/skinning/cluster_normals.h>
 #include <CGAL/Geodesic_skeleton/internal/skinning/heat_sources.h>
 #include <CGAL/Geodesic_skeleton/internal/skinning/inscribed_balls.h>
@@ -332,7 +333,12 @@ inline void finish_weights(Bone_weights& weights, double exponent, const std::ve
 /// balls (R the solid's largest MAT radius in voxels), plus the sparse Cholesky
 /// factorisation of the C x C system (about O(C^1.5)) and one solve per bone, plus O(N) to
 /// read the weights at the vertices; O(V_box + V + N + F) memory.
-template <typename TriangleMesh, typename Point, typename WeightMap,
+///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default) or `CGAL::Parallel_tag`: the
+///         second runs the passes over the vertices, the faces and the clusters and the
+///         bones' solves on as many of the standard library's threads as the hardware has
+///         (link `Threads::Threads`). The weights are the same, bit for bit, either way.
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh, typename Point, typename WeightMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control_skeleton<Point>& skeleton,
                                          WeightMap weight_output,
@@ -344,6 +350,7 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   namespace ranges = parameter_ranges;
   const char* caller = "compute_skinning_weights";
   const auto start = std::chrono::steady_clock::now();
+  const unsigned threads = internal::thread_count<ConcurrencyTag>();
 
   const std::size_t k = internal::checked_parameter(
       ranges::max_bones_per_vertex,
@@ -417,7 +424,7 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   const std::size_t m = clusters.number_of_clusters();
   std::vector<internal::Vec3> normals;
   std::vector<double> areas;
-  internal::outward_cluster_normals(grid_points, triangles, clusters, normals, areas);
+  internal::outward_cluster_normals(grid_points, triangles, clusters, normals, areas, threads);
   const internal::Point_cells cells(solid, clusters.centroid);
 
   // Each cluster's centre: where it sits in the shape, which decides the bone that heats it.
@@ -506,12 +513,14 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   // bones before the sharpening; then the k largest are kept.
   std::vector<Bone_weights> weights(n);
   report.heat_diffused = internal::diffuse_bone_heat(grid_points, clusters, areas, sources, bones,
-                                                     Bone_weights::capacity, weights);
-  for(std::size_t v = 0; v < n; ++v)
-  {
+                                                     Bone_weights::capacity, weights, threads);
+  internal::for_each_index(n, threads, [&](std::size_t v) {
     internal::finish_weights(weights[v], sharpness, joint_of_bone, k, minimum_weight);
     if(weights[v].empty()) // the diffusion failed (it should not): the heating bone alone
       weights[v].push_back(sources.bone[clusters.cluster_of[v]], 1.f);
+  });
+  for(std::size_t v = 0; v < n; ++v) // the output map, on the caller's thread: any map will do
+  {
     put(weight_output, vertex_of[v], weights[v]);
     if constexpr(!is_default_parameter<NamedParameters, internal_np::bone_segmentation_map_t>::value)
     {

@@ -10,6 +10,7 @@
 // centroid) is negative has its normals turned round, so that a mesh and its mirror winding
 // get the same weights.
 
+#include <CGAL/Geodesic_skeleton/internal/parallel_parts.h>
 #include <CGAL/Geodesic_skeleton/internal/skinning/surface_clusters.h>
 #include <CGAL/Geodesic_skeleton/internal/union_find.h>
 #include <CGAL/Geodesic_skeleton/internal/vec3.h>
@@ -18,11 +19,16 @@
 #include <cstddef>
 #include <cstdint>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
+
+// The parts of the triangles whose sums outward_cluster_normals() takes apart (on as many
+// threads as there are), whatever the number of threads.
+constexpr std::size_t normal_sum_parts = 4;
 
 // The connected pieces of the surface, as a piece number (its first cluster) per cluster:
 // a cluster is connected, so the clusters joined by edges make the mesh's pieces.
@@ -43,16 +49,16 @@ inline std::vector<std::uint32_t> cluster_pieces(const Surface_clusters& cluster
 // `points` squared) in `areas`, and in `normals` the sum, over its vertices, of their
 // triangles' area-weighted normals, of length 1 (0 for a cluster of degenerate triangles
 // only, or of none), pointing out of its piece. A cluster of one vertex gets the vertex's
-// normal.
+// normal. On up to `threads` threads.
 inline void outward_cluster_normals(const std::vector<Vec3>& points,
                                     const std::vector<std::array<std::uint32_t, 3>>& triangles,
                                     const Surface_clusters& clusters, std::vector<Vec3>& normals,
-                                    std::vector<double>& areas)
+                                    std::vector<double>& areas, unsigned threads)
 {
   const std::size_t m = clusters.number_of_clusters();
   const std::vector<std::uint32_t> piece = cluster_pieces(clusters);
   std::vector<Vec3> centroid(m, Vec3{0, 0, 0});
-  std::vector<double> count(m, 0.), volume(m, 0.);
+  std::vector<double> count(m, 0.);
   for(std::size_t c = 0; c < m; ++c)
   {
     for(std::size_t i = 0; i < 3; ++i)
@@ -64,22 +70,46 @@ inline void outward_cluster_normals(const std::vector<Vec3>& points,
       for(double& x : centroid[p])
         x /= count[p];
 
-  normals.assign(m, Vec3{0, 0, 0});
-  areas.assign(m, 0.);
-  for(const auto& t : triangles)
+  // The triangles in a fixed number of parts, each summed on its own, then the parts in order:
+  // the same sums with any number of threads.
+  struct Sums
   {
-    const Vec3 twice_area_normal = cross3(sub(points[t[1]], points[t[0]]), sub(points[t[2]], points[t[0]]));
-    const double third = norm3(twice_area_normal) / 6;
-    for(std::uint32_t v : t)
+    std::vector<Vec3> normals;
+    std::vector<double> areas, volume;
+  };
+  std::vector<Sums> part(normal_sum_parts);
+  for_each_part(triangles.size(), normal_sum_parts, threads, [&](std::size_t p, std::size_t begin, std::size_t end) {
+    Sums& sums = part[p];
+    sums.normals.assign(m, Vec3{0, 0, 0});
+    sums.areas.assign(m, 0.);
+    sums.volume.assign(m, 0.);
+    for(std::size_t i = begin; i < end; ++i)
     {
-      const std::uint32_t c = clusters.cluster_of[v];
-      areas[c] += third;
-      for(std::size_t i = 0; i < 3; ++i)
-        normals[c][i] += twice_area_normal[i];
+      const auto& t = triangles[i];
+      const Vec3 twice_area_normal = cross3(sub(points[t[1]], points[t[0]]), sub(points[t[2]], points[t[0]]));
+      const double third = norm3(twice_area_normal) / 6;
+      for(std::uint32_t v : t)
+      {
+        const std::uint32_t c = clusters.cluster_of[v];
+        sums.areas[c] += third;
+        for(std::size_t x = 0; x < 3; ++x)
+          sums.normals[c][x] += twice_area_normal[x];
+      }
+      const std::uint32_t pc = piece[clusters.cluster_of[t[0]]];
+      sums.volume[pc] += dot3(sub(points[t[0]], centroid[pc]), twice_area_normal);
     }
-    const std::uint32_t p = piece[clusters.cluster_of[t[0]]];
-    volume[p] += dot3(sub(points[t[0]], centroid[p]), twice_area_normal);
-  }
+  });
+  normals = std::move(part[0].normals);
+  areas = std::move(part[0].areas);
+  std::vector<double> volume = std::move(part[0].volume);
+  for(std::size_t p = 1; p < normal_sum_parts; ++p)
+    for(std::size_t c = 0; c < m; ++c)
+    {
+      areas[c] += part[p].areas[c];
+      volume[c] += part[p].volume[c];
+      for(std::size_t x = 0; x < 3; ++x)
+        normals[c][x] += part[p].normals[c][x];
+    }
   for(std::size_t c = 0; c < m; ++c)
     if(const double length = norm3(normals[c]); length > 0)
     {

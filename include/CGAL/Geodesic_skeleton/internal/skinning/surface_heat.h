@@ -19,6 +19,7 @@
 // scale.
 
 #include <CGAL/Geodesic_skeleton/Bone_weights.h>
+#include <CGAL/Geodesic_skeleton/internal/parallel_parts.h>
 #include <CGAL/Geodesic_skeleton/internal/skinning/surface_clusters.h>
 #include <CGAL/Geodesic_skeleton/internal/vec3.h>
 
@@ -231,7 +232,7 @@ struct Cluster_weights
 // `kept` of each cluster.
 inline bool solve_cluster_heat(const Surface_clusters& clusters, const std::vector<double>& heat,
                                const Heat_sources& sources, std::size_t bones, double kept,
-                               Cluster_weights& out)
+                               Cluster_weights& out, unsigned threads)
 {
   const std::size_t n = clusters.number_of_clusters();
   const Eigen::SparseMatrix<double> system = screened_cotangent_laplacian(clusters.centroid, clusters.triangles, heat);
@@ -247,36 +248,61 @@ inline bool solve_cluster_heat(const Surface_clusters& clusters, const std::vect
     for(std::size_t i = 0; i < count; ++i)
       heated[heating[i]].emplace_back(std::uint32_t(c), heat[c] / double(count));
   }
-  // A few bones per solve: one pass over the factor serves them all. The weights kept are
-  // gathered as (cluster, bone) and weight, bones in increasing order within a cluster.
+  // A few bones per solve: one pass over the factor serves them all; the solves of a round,
+  // one per thread, run side by side. The weights kept are gathered as (cluster, bone) and
+  // weight, batch after batch, bones in increasing order within a cluster.
   constexpr std::size_t block = 8;
-  std::vector<std::uint32_t> batch;
-  std::vector<double> block_weights;
-  std::vector<std::uint32_t> count(n + 1, 0);
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> entries;
-  std::vector<double> values;
+  std::vector<std::vector<std::uint32_t>> batches;
   for(std::size_t first = 0; first < bones;)
   {
-    batch.clear();
+    std::vector<std::uint32_t> batch;
     for(; first < bones && batch.size() < block; ++first)
       if(!heated[first].empty())
         batch.push_back(std::uint32_t(first));
-    if(batch.empty())
-      continue;
-    const std::size_t width = batch.size();
-    block_weights.assign(n * width, 0.);
-    for(std::size_t column = 0; column < width; ++column)
-      for(const auto& [c, h] : heated[batch[column]])
-        block_weights[c * width + column] = h;
-    solve_in_rows(solver, block_weights, width);
-    for(std::size_t c = 0; c < n; ++c)
+    if(!batch.empty())
+      batches.push_back(std::move(batch));
+  }
+  struct Kept
+  {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> entries;
+    std::vector<double> values;
+  };
+  const std::size_t round = std::max<std::size_t>(1, threads);
+  std::vector<Kept> kept_of(batches.size());
+  std::vector<std::vector<double>> block_weights(std::min(round, batches.size()));
+  for(std::size_t first = 0; first < batches.size(); first += round)
+  {
+    const std::size_t in_round = std::min(round, batches.size() - first);
+    for_each_part(in_round, in_round, threads, [&](std::size_t slot, std::size_t, std::size_t) {
+      const std::vector<std::uint32_t>& batch = batches[first + slot];
+      const std::size_t width = batch.size();
+      std::vector<double>& x = block_weights[slot];
+      x.assign(n * width, 0.);
       for(std::size_t column = 0; column < width; ++column)
-        if(const double w = block_weights[c * width + column]; w > kept)
-        {
-          entries.emplace_back(std::uint32_t(c), batch[column]);
-          values.push_back(w);
-          ++count[c + 1];
-        }
+        for(const auto& [c, h] : heated[batch[column]])
+          x[c * width + column] = h;
+      solve_in_rows(solver, x, width);
+      Kept& out_batch = kept_of[first + slot];
+      for(std::size_t c = 0; c < n; ++c)
+        for(std::size_t column = 0; column < width; ++column)
+          if(const double w = x[c * width + column]; w > kept)
+          {
+            out_batch.entries.emplace_back(std::uint32_t(c), batch[column]);
+            out_batch.values.push_back(w);
+          }
+    });
+  }
+  block_weights.clear();
+  std::vector<std::uint32_t> count(n + 1, 0);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> entries;
+  std::vector<double> values;
+  for(Kept& k : kept_of)
+  {
+    for(const auto& e : k.entries)
+      ++count[e.first + 1];
+    entries.insert(entries.end(), k.entries.begin(), k.entries.end());
+    values.insert(values.end(), k.values.begin(), k.values.end());
+    k = Kept();
   }
   // By cluster (a counting sort keeps the bones' increasing order).
   for(std::size_t c = 0; c < n; ++c)
@@ -314,7 +340,7 @@ struct Linear_cluster_weights
 // under the `k`-th largest at every vertex of the cluster: they are never kept.
 inline Linear_cluster_weights linear_cluster_weights(const std::vector<Vec3>& points, const Surface_clusters& clusters,
                                                      const Cluster_weights& cluster_weights, std::size_t k,
-                                                     double negligible)
+                                                     double negligible, unsigned threads)
 {
   const std::size_t m = clusters.number_of_clusters();
   std::vector<double> reach(m, 0.); // the farthest vertex from the centroid
@@ -323,50 +349,61 @@ inline Linear_cluster_weights linear_cluster_weights(const std::vector<Vec3>& po
     const std::uint32_t c = clusters.cluster_of[v];
     reach[c] = std::max(reach[c], squared_distance3(points[v], clusters.centroid[c]));
   }
+  // The clusters in parts, one per thread, each its weights on its own, then joined in order.
+  const std::size_t parts = threads <= 1 || m < 4096 ? 1 : std::size_t(threads);
+  std::vector<std::vector<Linear_weight>> part_weights(parts);
   Linear_cluster_weights out;
   out.first.assign(m + 1, 0);
-  std::vector<Linear_weight>& linear = out.weights;
-  std::vector<Vec3> k_of_neighbour;
-  std::vector<std::uint32_t> read_at; // per neighbour of the cluster: where its weights are read
-  std::vector<double> lowest;
-  for(std::uint32_t c = 0; c < m; ++c)
-  {
-    k_of_neighbour.clear();
-    if(clusters.size[c] > 1)
-      gradient_weights(clusters, c, k_of_neighbour);
-    const double r = std::sqrt(reach[c]);
-    const std::uint32_t* neighbour = clusters.neighbours.data() + clusters.first_neighbour[c];
-    read_at.resize(k_of_neighbour.size());
-    for(std::uint32_t j = 0; j < k_of_neighbour.size(); ++j)
-      read_at[j] = cluster_weights.first[neighbour[j]];
-    for(std::uint32_t i = cluster_weights.first[c]; i < cluster_weights.first[c + 1]; ++i)
+  for_each_part(m, parts, threads, [&](std::size_t part, std::size_t begin_cluster, std::size_t end_cluster) {
+    std::vector<Linear_weight>& linear = part_weights[part];
+    std::vector<Vec3> k_of_neighbour;
+    std::vector<std::uint32_t> read_at; // per neighbour of the cluster: where its weights are read
+    std::vector<double> lowest;
+    for(std::uint32_t c = std::uint32_t(begin_cluster); c < end_cluster; ++c)
     {
-      const std::uint32_t b = cluster_weights.bone[i];
-      const double w = cluster_weights.weight[i];
-      Vec3 gradient{0, 0, 0};
+      const std::size_t first = linear.size();
+      k_of_neighbour.clear();
+      if(clusters.size[c] > 1)
+        gradient_weights(clusters, c, k_of_neighbour);
+      const double r = std::sqrt(reach[c]);
+      const std::uint32_t* neighbour = clusters.neighbours.data() + clusters.first_neighbour[c];
+      read_at.resize(k_of_neighbour.size());
       for(std::uint32_t j = 0; j < k_of_neighbour.size(); ++j)
+        read_at[j] = cluster_weights.first[neighbour[j]];
+      for(std::uint32_t i = cluster_weights.first[c]; i < cluster_weights.first[c + 1]; ++i)
       {
-        const double difference = cluster_weights.of(neighbour[j], b, read_at[j]) - w;
-        for(std::size_t x = 0; x < 3; ++x)
-          gradient[x] += k_of_neighbour[j][x] * difference;
+        const std::uint32_t b = cluster_weights.bone[i];
+        const double w = cluster_weights.weight[i];
+        Vec3 gradient{0, 0, 0};
+        for(std::uint32_t j = 0; j < k_of_neighbour.size(); ++j)
+        {
+          const double difference = cluster_weights.of(neighbour[j], b, read_at[j]) - w;
+          for(std::size_t x = 0; x < 3; ++x)
+            gradient[x] += k_of_neighbour[j][x] * difference;
+        }
+        if(w + norm3(gradient) * r > negligible)
+          linear.push_back({b, w, gradient});
       }
-      if(w + norm3(gradient) * r > negligible)
-        linear.push_back({b, w, gradient});
+      const auto begin = linear.begin() + std::ptrdiff_t(first);
+      if(std::size_t(linear.end() - begin) > k)
+      {
+        lowest.clear();
+        for(auto it = begin; it != linear.end(); ++it)
+          lowest.push_back(it->weight - norm3(it->gradient) * r);
+        std::nth_element(lowest.begin(), lowest.begin() + std::ptrdiff_t(k - 1), lowest.end(), std::greater<double>());
+        const double kth_lowest = lowest[k - 1];
+        linear.erase(std::remove_if(begin, linear.end(),
+                                    [&](const Linear_weight& lw) { return lw.weight + norm3(lw.gradient) * r < kth_lowest; }),
+                     linear.end());
+      }
+      out.first[c + 1] = std::uint32_t(linear.size() - first); // a count, made an offset below
     }
-    const auto begin = linear.begin() + out.first[c];
-    if(std::size_t(linear.end() - begin) > k)
-    {
-      lowest.clear();
-      for(auto it = begin; it != linear.end(); ++it)
-        lowest.push_back(it->weight - norm3(it->gradient) * r);
-      std::nth_element(lowest.begin(), lowest.begin() + std::ptrdiff_t(k - 1), lowest.end(), std::greater<double>());
-      const double kth_lowest = lowest[k - 1];
-      linear.erase(std::remove_if(begin, linear.end(),
-                                  [&](const Linear_weight& lw) { return lw.weight + norm3(lw.gradient) * r < kth_lowest; }),
-                   linear.end());
-    }
-    out.first[c + 1] = std::uint32_t(linear.size());
-  }
+  });
+  for(std::size_t c = 0; c < m; ++c)
+    out.first[c + 1] += out.first[c];
+  out.weights.reserve(out.first[m]);
+  for(const std::vector<Linear_weight>& linear : part_weights)
+    out.weights.insert(out.weights.end(), linear.begin(), linear.end());
   return out;
 }
 
@@ -378,10 +415,12 @@ inline Linear_cluster_weights linear_cluster_weights(const std::vector<Vec3>& po
 // there. Distances below `nearest_distance` voxels count as that (a cluster on a bone),
 // areas below `smallest_area` square voxels as that (a cluster of degenerate triangles only,
 // or of none, still feels its heat source). Returns false when the factorisation fails (it
-// should not: the matrix is positive definite), leaving `weights` untouched.
+// should not: the matrix is positive definite), leaving `weights` untouched. The solves and
+// the loops over clusters and vertices run on up to `threads` threads, with the same result
+// for any number.
 inline bool diffuse_bone_heat(const std::vector<Vec3>& points, const Surface_clusters& clusters,
                               const std::vector<double>& areas, const Heat_sources& sources, std::size_t bones,
-                              std::size_t k, std::vector<Bone_weights>& weights)
+                              std::size_t k, std::vector<Bone_weights>& weights, unsigned threads)
 {
   constexpr double heat_constant = 1, nearest_distance = 0.1, smallest_area = 1e-6, negligible = 1e-4;
   const std::size_t m = clusters.number_of_clusters();
@@ -393,12 +432,12 @@ inline bool diffuse_bone_heat(const std::vector<Vec3>& points, const Surface_clu
   }
   Cluster_weights cluster_weights;
   // A cluster keeps weights well under what a vertex keeps: its gradient may raise them.
-  if(!solve_cluster_heat(clusters, heat, sources, bones, 0.01 * negligible, cluster_weights))
+  if(!solve_cluster_heat(clusters, heat, sources, bones, 0.01 * negligible, cluster_weights, threads))
     return false;
   // The clusters' weights are few, the vertices many: each vertex reads its cluster's.
-  const Linear_cluster_weights linear = linear_cluster_weights(points, clusters, cluster_weights, k, negligible);
-  for(std::size_t v = 0; v < points.size(); ++v)
-  {
+  const Linear_cluster_weights linear =
+      linear_cluster_weights(points, clusters, cluster_weights, k, negligible, threads);
+  for_each_index(points.size(), threads, [&](std::size_t v) {
     const std::uint32_t c = clusters.cluster_of[v];
     const Vec3 offset = sub(points[v], clusters.centroid[c]);
     for(std::uint32_t i = linear.first[c]; i < linear.first[c + 1]; ++i)
@@ -407,7 +446,7 @@ inline bool diffuse_bone_heat(const std::vector<Vec3>& points, const Surface_clu
       if(const double at_v = std::min(1., lw.weight + dot3(lw.gradient, offset)); at_v > negligible)
         keep_largest(weights[v], k, lw.bone, float(at_v));
     }
-  }
+  });
   return true;
 }
 
