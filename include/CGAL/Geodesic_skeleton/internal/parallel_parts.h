@@ -86,13 +86,19 @@ void for_each_part(std::size_t count, std::size_t parts, unsigned threads, const
       std::rethrow_exception(e);
 }
 
+// The parts a loop over `count` independent indices is split into: one per thread, or one
+// alone when the loop is too short to pay for starting threads.
+inline std::size_t index_parts(std::size_t count, unsigned threads)
+{
+  return threads <= 1 || count < 4096 ? 1 : std::size_t(threads);
+}
+
 // Calls f(i) for every i in [0, count), on up to `threads` threads, a range of indices each.
 // f must write nothing that another index writes.
 template <typename Function>
 void for_each_index(std::size_t count, unsigned threads, const Function& f)
 {
-  const std::size_t parts = threads <= 1 || count < 4096 ? 1 : std::size_t(threads);
-  for_each_part(count, parts, threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+  for_each_part(count, index_parts(count, threads), threads, [&](std::size_t, std::size_t begin, std::size_t end) {
     for(std::size_t i = begin; i < end; ++i)
       f(i);
   });

@@ -248,9 +248,8 @@ inline bool solve_cluster_heat(const Surface_clusters& clusters, const std::vect
     for(std::size_t i = 0; i < count; ++i)
       heated[heating[i]].emplace_back(std::uint32_t(c), heat[c] / double(count));
   }
-  // A few bones per solve: one pass over the factor serves them all; the solves of a round,
-  // one per thread, run side by side. The weights kept are gathered as (cluster, bone) and
-  // weight, batch after batch, bones in increasing order within a cluster.
+  // A few bones per solve: one pass over the factor serves them all; the batches' solves run
+  // side by side, one per thread.
   constexpr std::size_t block = 8;
   std::vector<std::vector<std::uint32_t>> batches;
   for(std::size_t first = 0; first < bones;)
@@ -262,60 +261,47 @@ inline bool solve_cluster_heat(const Surface_clusters& clusters, const std::vect
     if(!batch.empty())
       batches.push_back(std::move(batch));
   }
+  // Per batch, the weights kept, as (cluster, bone) and weight; a batch's solve needs a
+  // buffer of n x 8 values, so as many of them exist at once as there are threads.
   struct Kept
   {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> entries;
     std::vector<double> values;
   };
-  const std::size_t round = std::max<std::size_t>(1, threads);
   std::vector<Kept> kept_of(batches.size());
-  std::vector<std::vector<double>> block_weights(std::min(round, batches.size()));
-  for(std::size_t first = 0; first < batches.size(); first += round)
-  {
-    const std::size_t in_round = std::min(round, batches.size() - first);
-    for_each_part(in_round, in_round, threads, [&](std::size_t slot, std::size_t, std::size_t) {
-      const std::vector<std::uint32_t>& batch = batches[first + slot];
-      const std::size_t width = batch.size();
-      std::vector<double>& x = block_weights[slot];
-      x.assign(n * width, 0.);
+  for_each_part(batches.size(), batches.size(), threads, [&](std::size_t b, std::size_t, std::size_t) {
+    const std::vector<std::uint32_t>& batch = batches[b];
+    const std::size_t width = batch.size();
+    std::vector<double> x(n * width, 0.);
+    for(std::size_t column = 0; column < width; ++column)
+      for(const auto& [c, h] : heated[batch[column]])
+        x[c * width + column] = h;
+    solve_in_rows(solver, x, width);
+    for(std::size_t c = 0; c < n; ++c)
       for(std::size_t column = 0; column < width; ++column)
-        for(const auto& [c, h] : heated[batch[column]])
-          x[c * width + column] = h;
-      solve_in_rows(solver, x, width);
-      Kept& out_batch = kept_of[first + slot];
-      for(std::size_t c = 0; c < n; ++c)
-        for(std::size_t column = 0; column < width; ++column)
-          if(const double w = x[c * width + column]; w > kept)
-          {
-            out_batch.entries.emplace_back(std::uint32_t(c), batch[column]);
-            out_batch.values.push_back(w);
-          }
-    });
-  }
-  block_weights.clear();
+        if(const double w = x[c * width + column]; w > kept)
+        {
+          kept_of[b].entries.emplace_back(std::uint32_t(c), batch[column]);
+          kept_of[b].values.push_back(w);
+        }
+  });
+  // By cluster, batch after batch (a counting sort keeps the bones' increasing order).
   std::vector<std::uint32_t> count(n + 1, 0);
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> entries;
-  std::vector<double> values;
-  for(Kept& k : kept_of)
-  {
+  for(const Kept& k : kept_of)
     for(const auto& e : k.entries)
       ++count[e.first + 1];
-    entries.insert(entries.end(), k.entries.begin(), k.entries.end());
-    values.insert(values.end(), k.values.begin(), k.values.end());
-    k = Kept();
-  }
-  // By cluster (a counting sort keeps the bones' increasing order).
   for(std::size_t c = 0; c < n; ++c)
     count[c + 1] += count[c];
   out.first = count;
-  out.bone.resize(entries.size());
-  out.weight.resize(entries.size());
-  for(std::size_t i = 0; i < entries.size(); ++i)
-  {
-    const std::uint32_t slot = count[entries[i].first]++;
-    out.bone[slot] = entries[i].second;
-    out.weight[slot] = values[i];
-  }
+  out.bone.resize(count[n]);
+  out.weight.resize(count[n]);
+  for(const Kept& k : kept_of)
+    for(std::size_t i = 0; i < k.entries.size(); ++i)
+    {
+      const std::uint32_t slot = count[k.entries[i].first]++;
+      out.bone[slot] = k.entries[i].second;
+      out.weight[slot] = k.values[i];
+    }
   return true;
 }
 
@@ -350,7 +336,7 @@ inline Linear_cluster_weights linear_cluster_weights(const std::vector<Vec3>& po
     reach[c] = std::max(reach[c], squared_distance3(points[v], clusters.centroid[c]));
   }
   // The clusters in parts, one per thread, each its weights on its own, then joined in order.
-  const std::size_t parts = threads <= 1 || m < 4096 ? 1 : std::size_t(threads);
+  const std::size_t parts = index_parts(m, threads);
   std::vector<std::vector<Linear_weight>> part_weights(parts);
   Linear_cluster_weights out;
   out.first.assign(m + 1, 0);
