@@ -31,15 +31,18 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <future>
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include <dlfcn.h>  // dlopen: the formats' plug-in
@@ -347,80 +350,103 @@ void add_skinning_json(const Options& o, const Skinning& skinning, nlohmann::jso
                       {"milliseconds", r.milliseconds}};
 }
 
-// Appends the report's "weights" to `out`: the non-zero weights as three parallel arrays
+// Writes the report's "weights" to `out`: the non-zero weights as three parallel arrays
 // (vertex, bone, weight), vertex by vertex, largest weight first. Vertices are numbered as
 // in the input file when CGAL reads its format (the mesh's own numbering for the scene
-// formats read through Assimp). The numbers are written by std::to_chars straight into
-// `out`, each in its shortest form that reads back to the same value: millions of weights
-// in a fraction of the time a JSON tree of them costs.
-void append_weights_json(std::string& out, const Skinning& skinning)
+// formats read through Assimp). The numbers are written by std::to_chars, each in its
+// shortest form that reads back to the same value, in pieces of a few thousand vertices:
+// a second thread writes the next piece's text while this one hands the last to the file,
+// so that millions of weights go at about the speed of the disk, and never as a string of
+// them all.
+void write_weights_json(std::ostream& out, const Skinning& skinning)
 {
   std::vector<std::size_t> mesh_vertex(skinning.weights.size());
   for(std::size_t v = 0; v < mesh_vertex.size(); ++v)
     mesh_vertex[v] = v;
   if(!is_scene_file(skinning.input) && !skinning.file_numbering)
     mesh_vertex = mesh_vertex_of_file_points(skinning.input, skinning.mesh);
-  std::size_t pairs = 0;
-  for(std::size_t v : mesh_vertex)
-    pairs += skinning.weights[v].size();
-  // The text goes through a small buffer, appended to `out` when full (`out` reserved once,
-  // for about 25 characters per pair, so that it grows rarely).
-  out.reserve(out.size() + 64 + 25 * pairs);
-  char buffer[1 << 16];
-  char* p = buffer;
-  auto flush_if_full = [&] {
-    if(p > buffer + sizeof buffer - 64)
-    {
-      out.append(buffer, std::size_t(p - buffer));
-      p = buffer;
-    }
+  // Piece p of an array is its numbers for the vertices [p * piece, (p + 1) * piece), each
+  // after a comma but the array's first.
+  constexpr std::size_t piece = 1 << 15;
+  const std::size_t pieces = (mesh_vertex.size() + piece - 1) / piece;
+  std::size_t most_pairs = 0; // in a piece
+  for(std::size_t p = 0; p < pieces; ++p)
+  {
+    std::size_t pairs = 0;
+    for(std::size_t v = p * piece; v < std::min(mesh_vertex.size(), (p + 1) * piece); ++v)
+      pairs += skinning.weights[mesh_vertex[v]].size();
+    most_pairs = std::max(most_pairs, pairs);
+  }
+  struct Text
+  {
+    std::unique_ptr<char[]> bytes; // not initialised: only what is written is touched
+    std::size_t size = 0;
   };
-  auto text = [&](const char* s) {
-    for(; *s != 0; ++s)
-      *p++ = *s;
-    flush_if_full();
-  };
-  auto array = [&](const char* name, auto number_of) {
-    text(name);
-    *p++ = '[';
-    bool first = true;
-    for(std::size_t v = 0; v < mesh_vertex.size(); ++v)
+  auto write_piece = [&](int array, std::size_t p, bool first, Text& text) {
+    char* c = text.bytes.get();
+    for(std::size_t v = p * piece; v < std::min(mesh_vertex.size(), (p + 1) * piece); ++v)
     {
       const gs::Bone_weights& w = skinning.weights[mesh_vertex[v]];
       for(std::size_t i = 0; i < w.size(); ++i)
       {
         if(!first)
-          *p++ = ',';
+          *c++ = ',';
         first = false;
-        p = std::to_chars(p, p + 32, number_of(v, w, i)).ptr;
-        flush_if_full();
+        c = array == 0   ? std::to_chars(c, c + 32, std::uint32_t(v)).ptr
+            : array == 1 ? std::to_chars(c, c + 32, w.bone[i]).ptr
+                         : std::to_chars(c, c + 32, w.weight[i]).ptr;
       }
     }
-    *p++ = ']';
+    text.size = std::size_t(c - text.bytes.get());
+    return first;
   };
-  const std::string vertices = "{\"vertices\": " + std::to_string(mesh_vertex.size());
-  text(vertices.c_str());
-  array(", \"vertex\": ", [](std::size_t v, const gs::Bone_weights&, std::size_t) { return std::uint32_t(v); });
-  array(", \"bone\": ", [](std::size_t, const gs::Bone_weights& w, std::size_t i) { return w.bone[i]; });
-  array(", \"weight\": ", [](std::size_t, const gs::Bone_weights& w, std::size_t i) { return w.weight[i]; });
-  *p++ = '}';
-  out.append(buffer, std::size_t(p - buffer));
+  out << "{\"vertices\": " << mesh_vertex.size();
+  Text ready{std::unique_ptr<char[]>(new char[32 * most_pairs + 1])},
+      next{std::unique_ptr<char[]>(new char[32 * most_pairs + 1])};
+  for(int array = 0; array < 3; ++array)
+  {
+    out << (array == 0 ? ", \"vertex\": [" : array == 1 ? "], \"bone\": [" : "], \"weight\": [");
+    bool first = pieces == 0 || write_piece(array, 0, true, ready);
+    for(std::size_t p = 0; p < pieces; ++p)
+    {
+      std::future<bool> following;
+      if(p + 1 < pieces)
+      {
+        auto write_following = [&, p, first] { return write_piece(array, p + 1, first, next); };
+        try
+        {
+          following = std::async(std::launch::async, write_following);
+        }
+        catch(const std::system_error&) // no thread to start: this one writes it next
+        {
+          following = std::async(std::launch::deferred, write_following);
+        }
+      }
+      out.write(ready.bytes.get(), std::streamsize(ready.size));
+      if(p + 1 < pieces)
+      {
+        first = following.get();
+        std::swap(ready, next);
+      }
+    }
+  }
+  out << "]}";
 }
 
-// The report's text: `json`, and then, when `skinning` is not null, the weights as its last
+// Writes the report: `json`, and then, when `skinning` is not null, the weights as its last
 // member "weights" (after every other key: the tree's keys are in alphabetical order).
-std::string report_text(const nlohmann::json& json, const Skinning* skinning)
+void write_report(std::ostream& out, const nlohmann::json& json, const Skinning* skinning)
 {
   std::string text = json.dump(1);
   if(skinning != nullptr)
   {
     text.pop_back(); // the closing brace
-    text += ",\n \"weights\": ";
-    append_weights_json(text, *skinning);
-    text += "\n}";
+    out << text << ",\n \"weights\": ";
+    write_weights_json(out, *skinning);
+    out << "\n}\n";
   }
-  text += '\n';
-  return text;
+  else
+    out << text << '\n';
 }
 
 // Reads any mesh CGAL reads, and FBX, glTF/GLB and DAE files through Assimp (a file that is
@@ -452,17 +478,24 @@ nlohmann::json stage_json(const gs::Skeleton_statistics& s)
   return {{"points", s.points}, {"end_points", s.end_points}, {"junctions", s.junctions}, {"cycles", s.cycles}};
 }
 
-// Writes `text` to `path` through a temporary file, so that a failure leaves no half file.
-void write_file(const std::string& path, const std::string& text)
+// Calls write(stream) on a temporary file and renames it `path`, so that a failure (of the
+// stream, or an exception of `write`) leaves no half file.
+template <typename Write>
+void write_file(const std::string& path, const Write& write)
 {
   const std::string temporary = path + ".partial";
+  try
   {
     std::ofstream out(temporary, std::ios::binary);
-    if(!out || !(out << text) || !out.flush())
-    {
-      std::remove(temporary.c_str());
+    if(out)
+      write(out);
+    if(!out || !out.flush())
       throw Usage_error(path + ": cannot write the file");
-    }
+  }
+  catch(...)
+  {
+    std::remove(temporary.c_str());
+    throw;
   }
   if(std::rename(temporary.c_str(), path.c_str()) != 0)
   {
@@ -572,7 +605,8 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
   if(skin)
     compute_skinning(o, input, control, given_skeleton ? nullptr : &solid, skinning);
 
-  std::string text;
+  // What goes to the output, written straight into the file (or standard output) at the end.
+  std::function<void(std::ostream&)> write_output;
   if(to_json && given_skeleton)
   {
     nlohmann::json json = {{"input", input},
@@ -581,7 +615,9 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
                            {"timings_ms", {{"skinning_weights", skinning.report.milliseconds}}},
                            {"control", gs::IO::control_skeleton_to_json(control)}};
     add_skinning_json(o, skinning, json); // a given skeleton is always skinned
-    text = report_text(json, o.weights ? &skinning : nullptr);
+    write_output = [&, json = std::move(json)](std::ostream& out) {
+      write_report(out, json, o.weights ? &skinning : nullptr);
+    };
   }
   else if(to_json)
   {
@@ -646,16 +682,18 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
                      {"cut_bones", control_json["cut_bones"]}, {"roots", control_json["roots"]}}}};
     if(skin)
       add_skinning_json(o, skinning, json);
-    text = report_text(json, skin && o.weights ? &skinning : nullptr);
+    write_output = [&, json = std::move(json)](std::ostream& out) {
+      write_report(out, json, skin && o.weights ? &skinning : nullptr);
+    };
   }
   else if(to_gltf)
   {
-    std::ostringstream out(std::ios::binary);
-    if(const std::string problem =
-           scene_formats().write_glTF(out, mesh, control, skinning.weights, ends_with(output, ".glb"));
-       !problem.empty())
-      throw Usage_error(output + ": " + problem);
-    text = out.str();
+    write_output = [&](std::ostream& out) {
+      if(const std::string problem =
+             scene_formats().write_glTF(out, mesh, control, skinning.weights, ends_with(output, ".glb"));
+         !problem.empty())
+        throw Usage_error(output + ": " + problem);
+    };
   }
   else
   {
@@ -666,8 +704,12 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
       gs::IO::write_BVH(out, control);
     else
       gs::IO::write_polylines(out, control);
-    text = out.str();
+    write_output = [text = out.str()](std::ostream& out) { out << text; };
   }
+  if(output.empty())
+    write_output(std::cout);
+  else
+    write_file(output, write_output);
 
   if(!o.svg.empty())
   {
@@ -692,12 +734,8 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
       gs::IO::write_svg_preview_of_graph(picture, mesh, reeb, 360,
                                          name + ": Reeb graph of the geodesic distance, " +
                                              std::to_string(num_vertices(reeb)) + " nodes");
-    write_file(o.svg, picture.str());
+    write_file(o.svg, [&picture](std::ostream& out) { out << picture.str(); });
   }
-  if(output.empty())
-    std::cout << text;
-  else
-    write_file(output, text);
 
   summary.vertices = num_vertices(mesh);
   summary.faces = num_faces(mesh);

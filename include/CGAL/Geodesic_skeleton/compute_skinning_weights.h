@@ -36,6 +36,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <future>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -335,9 +336,10 @@ inline void finish_weights(Bone_weights& weights, double exponent, const std::ve
 /// read the weights at the vertices; O(V_box + V + N + F) memory.
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default) or `CGAL::Parallel_tag`: the
-///         second runs the passes over the vertices, the faces and the clusters and the
-///         bones' solves on as many of the standard library's threads as the hardware has
-///         (link `Threads::Threads`). The weights are the same, bit for bit, either way.
+///         second runs the passes over the vertices, the faces and the clusters, the bones'
+///         searches and solves, and the ordering of the heat system (beside the searches) on
+///         as many of the standard library's threads as the hardware has (link
+///         `Threads::Threads`). The weights are the same, bit for bit, either way.
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh, typename Point, typename WeightMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control_skeleton<Point>& skeleton,
@@ -420,8 +422,13 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   // (internal/skinning/surface_clusters.h), each vertex reading its cluster's weights at
   // the end. A cluster stands at its vertices' centroid, with their area and the mean of
   // their outward normals.
-  const internal::Surface_clusters clusters = internal::cluster_surface(grid_points, triangles);
+  const internal::Surface_clusters clusters = internal::cluster_surface(grid_points, triangles, threads);
   const std::size_t m = clusters.number_of_clusters();
+  // The heat system's pattern is the clustered surface's: it is ordered and analysed beside
+  // what follows, until the heat sources are known.
+  internal::Heat_system heat_system;
+  std::future<void> heat_system_analysed =
+      internal::start_beside(threads, [&] { internal::analyse_heat_system(clusters, heat_system); });
   std::vector<internal::Vec3> normals;
   std::vector<double> areas;
   internal::outward_cluster_normals(grid_points, triangles, clusters, normals, areas, threads);
@@ -429,8 +436,9 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
 
   // Each cluster's centre: where it sits in the shape, which decides the bone that heats it.
   std::vector<internal::Vec3> centres(m);
-  for(std::size_t c = 0; c < m; ++c)
+  internal::for_each_index(m, threads, [&](std::size_t c) {
     centres[c] = internal::inscribed_ball_centre(cells.grid_point[c], normals[c], depth);
+  });
   depth = Voxel_distance_field();
 
   // The bones in the grid, and the distance to the nearest one.
@@ -452,8 +460,6 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
                            [](std::uint32_t, internal::Voxel_distance) { return true; });
 
   // One bounded search per bone; each cluster finds the bone that heats it.
-  internal::Heat_source_finder finder(m);
-  std::vector<internal::Voxel_distance> distance(solid.size(), internal::unreached);
   // A bone's search stops at a voxel where d_b + 1/2 >= s (d1 + 1/2) + 1 (in voxels).
   std::vector<internal::Voxel_distance> stop(solid.size());
   for(std::size_t u = 0; u < solid.size(); ++u)
@@ -461,50 +467,77 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
                   ? 0
                   : internal::Voxel_distance(std::min(4e9, (s * (nearest[u] * internal::voxels_per_unit + 0.5) + 0.5) /
                                                                internal::voxels_per_unit));
-  // The slots (cells with clusters) a search reached, each once per bone.
-  std::vector<std::uint32_t> stamp(cells.number_of_slots(), 0), touched_slots;
-  for(std::size_t b = 0; b < bones; ++b)
+  // The searches run side by side, the bones shared among the threads, each thread with its
+  // own scratch arrays; each keeps the clusters its bone reaches with their distances to it.
+  // Then the clusters are offered their bones bone after bone, as one thread would.
+  struct Reached_cluster
   {
-    reached.clear();
-    internal::voxel_dijkstra(solid, seeds[b], distance, reached, queue,
-                             [&](std::uint32_t u, internal::Voxel_distance d) { return d < stop[u]; });
-    report.voxel_visits += reached.size();
-    touched_slots.clear();
-    for(std::uint32_t u : reached)
-      for(std::uint32_t k = cells.first_slot[u]; k < cells.first_slot[u + 1]; ++k)
-        if(const std::uint32_t slot = cells.slots[k]; stamp[slot] != b + 1)
-        {
-          stamp[slot] = std::uint32_t(b + 1);
-          touched_slots.push_back(slot);
-        }
-    for(std::uint32_t slot : touched_slots)
-      cells.read_slot(solid, slot, distance, [&](std::uint32_t c, double d) {
-        finder.add(c, std::uint32_t(b), d, [&] {
+    std::uint32_t cluster;
+    double through_solid, straight, facing;
+  };
+  std::vector<std::vector<Reached_cluster>> reached_clusters(bones);
+  std::vector<std::size_t> visits(bones, 0);
+  internal::for_each_part(bones, std::min<std::size_t>(threads, bones), threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+    std::vector<internal::Voxel_distance> distance(solid.size(), internal::unreached);
+    std::vector<std::uint32_t> visited;
+    internal::Bucket_queue search_queue;
+    // The slots (cells with clusters) a search reached, each once per bone.
+    std::vector<std::uint32_t> stamp(cells.number_of_slots(), 0), touched_slots;
+    for(std::size_t b = begin; b < end; ++b)
+    {
+      visited.clear();
+      internal::voxel_dijkstra(solid, seeds[b], distance, visited, search_queue,
+                               [&](std::uint32_t u, internal::Voxel_distance d) { return d < stop[u]; });
+      visits[b] = visited.size();
+      touched_slots.clear();
+      for(std::uint32_t u : visited)
+        for(std::uint32_t k = cells.first_slot[u]; k < cells.first_slot[u + 1]; ++k)
+          if(const std::uint32_t slot = cells.slots[k]; stamp[slot] != b + 1)
+          {
+            stamp[slot] = std::uint32_t(b + 1);
+            touched_slots.push_back(slot);
+          }
+      for(std::uint32_t slot : touched_slots)
+        cells.read_slot(solid, slot, distance, [&](std::uint32_t c, double d) {
           const internal::Vec3 offset = internal::offset_from_polyline(cells.grid_point[c], polylines[b]);
           const double straight = internal::norm3(offset);
           const double cosine = straight > 0 ? internal::dot3(offset, normals[c]) / straight : 1.;
-          return std::array<double, 2>{straight, internal::Heat_source_finder::facing_distance(straight, cosine)};
+          reached_clusters[b].push_back(
+              {c, d, straight, internal::Heat_source_finder::facing_distance(straight, cosine)});
         });
-      });
-    for(std::uint32_t u : reached)
-      distance[u] = internal::unreached;
-  }
-
-  internal::Heat_sources sources = finder.sources(
-      [&](std::size_t c, std::uint32_t b) { return internal::distance_to_polyline(centres[c], polylines[b]); });
-  for(std::size_t c = 0; c < m; ++c)
-    if(sources.bone[c] == internal::Heat_source_finder::none)
-    {
-      // No bone in the cluster's part of the solid: the bone nearest in straight line.
-      sources.distance[c] = HUGE_VAL;
-      for(std::size_t b = 0; b < bones; ++b)
-        if(const double d = internal::distance_to_polyline(cells.grid_point[c], polylines[b]); d < sources.distance[c])
-        {
-          sources.distance[c] = d;
-          sources.bone[c] = std::uint32_t(b);
-        }
-      report.vertices_bound_in_straight_line += clusters.size[c];
+      for(std::uint32_t u : visited)
+        distance[u] = internal::unreached;
     }
+  });
+  internal::Heat_source_finder finder(m);
+  for(std::size_t b = 0; b < bones; ++b)
+  {
+    report.voxel_visits += visits[b];
+    for(const Reached_cluster& r : reached_clusters[b])
+      finder.add(r.cluster, std::uint32_t(b), r.through_solid,
+                 [&r] { return std::array<double, 2>{r.straight, r.facing}; });
+  }
+  reached_clusters.clear();
+  internal::Heat_sources sources = finder.sources(
+      [&](std::size_t c, std::uint32_t b) { return internal::distance_to_polyline(centres[c], polylines[b]); },
+      threads);
+  std::vector<std::uint8_t> in_straight_line(m, 0);
+  internal::for_each_index(m, threads, [&](std::size_t c) {
+    if(sources.bone[c] != internal::Heat_source_finder::none)
+      return;
+    in_straight_line[c] = 1;
+    // No bone in the cluster's part of the solid: the bone nearest in straight line.
+    sources.distance[c] = HUGE_VAL;
+    for(std::size_t b = 0; b < bones; ++b)
+      if(const double d = internal::distance_to_polyline(cells.grid_point[c], polylines[b]); d < sources.distance[c])
+      {
+        sources.distance[c] = d;
+        sources.bone[c] = std::uint32_t(b);
+      }
+  });
+  for(std::size_t c = 0; c < m; ++c)
+    if(in_straight_line[c])
+      report.vertices_bound_in_straight_line += clusters.size[c];
 
   std::vector<std::uint32_t> joint_of_bone(bones);
   for(std::size_t b = 0; b < bones; ++b)
@@ -512,8 +545,9 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   // The diffusion keeps all the bones a vertex holds, so that a joint's share counts all its
   // bones before the sharpening; then the k largest are kept.
   std::vector<Bone_weights> weights(n);
+  heat_system_analysed.get();
   report.heat_diffused = internal::diffuse_bone_heat(grid_points, clusters, areas, sources, bones,
-                                                     Bone_weights::capacity, weights, threads);
+                                                     Bone_weights::capacity, heat_system, weights, threads);
   internal::for_each_index(n, threads, [&](std::size_t v) {
     internal::finish_weights(weights[v], sharpness, joint_of_bone, k, minimum_weight);
     if(weights[v].empty()) // the diffusion failed (it should not): the heating bone alone

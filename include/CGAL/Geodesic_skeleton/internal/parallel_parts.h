@@ -15,6 +15,7 @@
 #include <atomic>
 #include <cstddef>
 #include <exception>
+#include <future>
 #include <system_error>
 #include <thread>
 #include <type_traits>
@@ -102,6 +103,23 @@ void for_each_index(std::size_t count, unsigned threads, const Function& f)
     for(std::size_t i = begin; i < end; ++i)
       f(i);
   });
+}
+
+// Starts f() beside the caller's work: on a thread of its own when `threads` allows more
+// than one (and one can be started), otherwise when the result is asked for. The future's
+// get() waits for f and rethrows what it threw.
+template <typename Function>
+std::future<void> start_beside(unsigned threads, Function f)
+{
+  if(threads > 1)
+    try
+    {
+      return std::async(std::launch::async, std::move(f));
+    }
+    catch(const std::system_error&) // no thread to start: f runs when asked for
+    {
+    }
+  return std::async(std::launch::deferred, std::move(f));
 }
 
 } // namespace internal

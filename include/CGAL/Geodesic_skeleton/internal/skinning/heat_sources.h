@@ -18,6 +18,7 @@
 // the solid is what chooses when no bone sees the vertex (a sheet folded round, a pocket
 // of the solid).
 
+#include <CGAL/Geodesic_skeleton/internal/parallel_parts.h>
 #include <CGAL/Geodesic_skeleton/internal/skinning/surface_heat.h>
 
 #include <algorithm>
@@ -75,23 +76,23 @@ public:
 
   // Per vertex, the bones that heat it and the facing distance to them (bone `none` for a
   // vertex no bone reached). `to_centre(v, b)` is the distance from the centre of vertex
-  // v's inscribed ball to bone b; it is asked only of vertices that several bones see.
+  // v's inscribed ball to bone b; it is asked only of vertices that several bones see, on up
+  // to `threads` threads at once.
   template <typename DistanceToCentre>
-  Heat_sources sources(DistanceToCentre to_centre) const
+  Heat_sources sources(DistanceToCentre to_centre, unsigned threads) const
   {
     const std::size_t n = m_seen.size();
     Heat_sources s;
     s.bone.assign(n, none);
     s.distance.assign(n, HUGE_VAL);
     s.tied.assign(n, Heat_sources::no_tied_bones());
-    for(std::size_t v = 0; v < n; ++v)
-    {
+    for_each_index(n, threads, [&](std::size_t v) {
       const Seen_bones& seen = m_seen[v];
       if(seen.count == 0)
       {
         s.bone[v] = m_nearest[v];
         s.distance[v] = m_nearest_facing[v];
-        continue;
+        return;
       }
       // The seen bones by distance to the centre, then by number.
       std::array<std::pair<double, std::uint8_t>, Seen_bones::capacity> order;
@@ -105,7 +106,7 @@ public:
       for(std::size_t i = 1, tied = 0; i < seen.count && tied < Heat_sources::most_tied; ++i)
         if(order[i].first <= order[0].first * (1 + tie))
           s.tied[v][tied++] = seen.bone[order[i].second];
-    }
+    });
     return s;
   }
 

@@ -18,6 +18,7 @@
 // with their gradient there (a least-squares fit over the neighbouring clusters), so that the
 // weights vary smoothly across the clusters instead of in steps.
 
+#include <CGAL/Geodesic_skeleton/internal/parallel_parts.h>
 #include <CGAL/Geodesic_skeleton/internal/union_find.h>
 #include <CGAL/Geodesic_skeleton/internal/vec3.h>
 
@@ -63,25 +64,36 @@ inline std::uint64_t cell_key_of(const Vec3& g)
 
 // Clusters the vertices `points` (grid coordinates) of `triangles` by cell and by the edges
 // inside each cell. Clusters are numbered by their first vertex. O(N + F log F) for the
-// sort of the triangles and edges that join clusters (a small share of a fine mesh's).
+// sort of the triangles and edges that join clusters (a small share of a fine mesh's). The
+// passes over the vertices and the triangles run on up to `threads` threads, with the same
+// clusters for any number.
 inline Surface_clusters cluster_surface(const std::vector<Vec3>& points,
-                                        const std::vector<std::array<std::uint32_t, 3>>& triangles)
+                                        const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                                        unsigned threads)
 {
   const std::size_t n = points.size();
   std::vector<std::uint64_t> key(n);
-  for(std::size_t v = 0; v < n; ++v)
+  for_each_index(n, threads, [&](std::size_t v) {
     key[v] = cell_key_of(Vec3{points[v][0] * cells_per_voxel, points[v][1] * cells_per_voxel,
                               points[v][2] * cells_per_voxel});
+  });
+  // The root of a set is its first vertex, whatever the order of the joins.
   std::vector<std::uint32_t> parent(n);
   std::iota(parent.begin(), parent.end(), 0u);
-  for(const auto& t : triangles)
-    for(int i = 0; i < 3; ++i)
-    {
-      const std::uint32_t a = t[std::size_t(i)], b = t[std::size_t((i + 1) % 3)];
-      if(key[a] == key[b])
-        if(const std::uint32_t ra = find_root(parent, a), rb = find_root(parent, b); ra != rb)
-          parent[std::max(ra, rb)] = std::min(ra, rb); // the root is the cluster's first vertex
-    }
+  auto join = [&](std::uint32_t a, std::uint32_t b) {
+    if(const std::uint32_t ra = find_root(parent, a), rb = find_root(parent, b); ra != rb)
+      parent[std::max(ra, rb)] = std::min(ra, rb);
+  };
+  for(const auto& [a, b, c] : triangles)
+  {
+    const bool ab = key[a] == key[b], bc = key[b] == key[c];
+    if(ab)
+      join(a, b);
+    if(bc)
+      join(b, c);
+    if(!(ab && bc) && key[c] == key[a]) // with both others, c and a are joined already
+      join(c, a);
+  }
   key = std::vector<std::uint64_t>();
 
   Surface_clusters c;
@@ -106,49 +118,72 @@ inline Surface_clusters cluster_surface(const std::vector<Vec3>& points,
     for(double& x : c.centroid[k])
       x /= double(c.size[k]);
 
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
-  for(const auto& t : triangles)
-  {
-    std::array<std::uint32_t, 3> k{c.cluster_of[t[0]], c.cluster_of[t[1]], c.cluster_of[t[2]]};
-    for(int i = 0; i < 3; ++i)
-      if(const std::uint32_t a = k[std::size_t(i)], b = k[std::size_t((i + 1) % 3)]; a != b)
-        edges.emplace_back(std::min(a, b), std::max(a, b));
-    if(k[0] != k[1] && k[1] != k[2] && k[0] != k[2])
+  // The edges and the triangles between clusters, by parts of the triangles; the order does
+  // not matter (both are sorted below).
+  using Edge = std::pair<std::uint32_t, std::uint32_t>;
+  const std::size_t parts = index_parts(triangles.size(), threads);
+  std::vector<std::vector<Edge>> part_edges(parts);
+  std::vector<std::vector<std::array<std::uint32_t, 3>>> part_triangles(parts);
+  for_each_part(triangles.size(), parts, threads, [&](std::size_t part, std::size_t begin, std::size_t end) {
+    part_edges[part].reserve(3 * (end - begin)); // address space: only what is written is touched
+    part_triangles[part].reserve(end - begin);
+    for(std::size_t f = begin; f < end; ++f)
     {
-      std::sort(k.begin(), k.end()); // the cotangent weights do not depend on the orientation
-      c.triangles.push_back(k);
+      const auto& t = triangles[f];
+      std::array<std::uint32_t, 3> k{c.cluster_of[t[0]], c.cluster_of[t[1]], c.cluster_of[t[2]]};
+      for(int i = 0; i < 3; ++i)
+        if(const std::uint32_t a = k[std::size_t(i)], b = k[std::size_t((i + 1) % 3)]; a != b)
+          part_edges[part].emplace_back(std::min(a, b), std::max(a, b));
+      if(k[0] != k[1] && k[1] != k[2] && k[0] != k[2])
+      {
+        std::sort(k.begin(), k.end()); // the cotangent weights do not depend on the orientation
+        part_triangles[part].push_back(k);
+      }
     }
-  }
+  });
+  c.triangles = std::move(part_triangles[0]);
+  for(std::size_t part = 1; part < parts; ++part)
+    c.triangles.insert(c.triangles.end(), part_triangles[part].begin(), part_triangles[part].end());
+  part_triangles.clear();
   std::sort(c.triangles.begin(), c.triangles.end());
   c.triangles.erase(std::unique(c.triangles.begin(), c.triangles.end()), c.triangles.end());
   // The neighbours of each cluster: the edges in both directions bucketed by cluster (a
-  // counting sort), then each bucket, a few dozen entries, sorted and made unique.
+  // counting sort); each bucket, a few dozen entries that name a few clusters many times,
+  // keeps each cluster once (a stamp per cluster), in increasing order.
   const std::size_t m = c.centroid.size();
   std::vector<std::uint32_t> first(m + 1, 0);
-  for(const auto& [a, b] : edges)
-  {
-    ++first[a + 1];
-    ++first[b + 1];
-  }
+  for(const std::vector<Edge>& edges : part_edges)
+    for(const auto& [a, b] : edges)
+    {
+      ++first[a + 1];
+      ++first[b + 1];
+    }
   for(std::size_t k = 0; k < m; ++k)
     first[k + 1] += first[k];
   std::vector<std::uint32_t> all(first.back());
   {
     std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
-    for(const auto& [a, b] : edges)
-    {
-      all[next[a]++] = b;
-      all[next[b]++] = a;
-    }
+    for(const std::vector<Edge>& edges : part_edges)
+      for(const auto& [a, b] : edges)
+      {
+        all[next[a]++] = b;
+        all[next[b]++] = a;
+      }
   }
-  edges = decltype(edges)();
+  part_edges.clear();
   c.first_neighbour.assign(m + 1, 0);
   c.neighbours.reserve(all.size() / 4);
+  std::vector<std::uint32_t> stamp(m, std::uint32_t(-1));
   for(std::size_t k = 0; k < m; ++k)
   {
-    const auto begin = all.begin() + first[k], end = all.begin() + first[k + 1];
-    std::sort(begin, end);
-    c.neighbours.insert(c.neighbours.end(), begin, std::unique(begin, end));
+    const std::size_t begin = c.neighbours.size();
+    for(std::uint32_t i = first[k]; i < first[k + 1]; ++i)
+      if(const std::uint32_t q = all[i]; stamp[q] != k)
+      {
+        stamp[q] = std::uint32_t(k);
+        c.neighbours.push_back(q);
+      }
+    std::sort(c.neighbours.begin() + std::ptrdiff_t(begin), c.neighbours.end());
     c.first_neighbour[k + 1] = std::uint32_t(c.neighbours.size());
   }
   return c;

@@ -227,16 +227,39 @@ struct Cluster_weights
   }
 };
 
+// The heat system of the clustered surface before the heat is known: the lower triangle of
+// its cotangent Laplacian, and the ordering and analysis of its sparse Cholesky
+// factorisation. Its pattern is the surface's, whatever the heat (which only adds to the
+// diagonal), so it may be made before the heat sources are found.
+struct Heat_system
+{
+  Eigen::SparseMatrix<double> matrix;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
+};
+
+// The heat system of the clustered surface `clusters`. About O(C^1.5) for C clusters.
+inline void analyse_heat_system(const Surface_clusters& clusters, Heat_system& system)
+{
+  system.matrix = screened_cotangent_laplacian(clusters.centroid, clusters.triangles,
+                                               std::vector<double>(clusters.number_of_clusters(), 0.));
+  system.solver.analyzePattern(system.matrix);
+}
+
 // Solves the screened heat system on the clustered surface (surface_clusters.h) for every
-// bone, the clusters heated by `sources` with the heat `heat`, keeping the weights above
-// `kept` of each cluster.
+// bone, the clusters heated by `sources` with the heat `heat` (added to `system`'s matrix),
+// keeping the weights above `kept` of each cluster.
 inline bool solve_cluster_heat(const Surface_clusters& clusters, const std::vector<double>& heat,
                                const Heat_sources& sources, std::size_t bones, double kept,
-                               Cluster_weights& out, unsigned threads)
+                               Heat_system& system, Cluster_weights& out, unsigned threads)
 {
   const std::size_t n = clusters.number_of_clusters();
-  const Eigen::SparseMatrix<double> system = screened_cotangent_laplacian(clusters.centroid, clusters.triangles, heat);
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(system);
+  // The heat on the diagonal: the first entry of each column of the lower triangle, which
+  // screened_cotangent_laplacian() writes in every column (setFromTriplets() sorts them).
+  Eigen::SparseMatrix<double>& matrix = system.matrix;
+  for(Eigen::Index j = 0; j < matrix.outerSize(); ++j)
+    matrix.valuePtr()[matrix.outerIndexPtr()[j]] += heat[std::size_t(j)];
+  system.solver.factorize(matrix);
+  const auto& solver = system.solver;
   if(solver.info() != Eigen::Success)
     return false;
   // The clusters each bone heats, with its share of their heat.
@@ -329,12 +352,24 @@ inline Linear_cluster_weights linear_cluster_weights(const std::vector<Vec3>& po
                                                      double negligible, unsigned threads)
 {
   const std::size_t m = clusters.number_of_clusters();
-  std::vector<double> reach(m, 0.); // the farthest vertex from the centroid
-  for(std::size_t v = 0; v < points.size(); ++v)
-  {
-    const std::uint32_t c = clusters.cluster_of[v];
-    reach[c] = std::max(reach[c], squared_distance3(points[v], clusters.centroid[c]));
-  }
+  // The farthest vertex from the centroid, taken by parts of the vertices (a largest value
+  // does not depend on the order).
+  const std::size_t vertex_parts = index_parts(points.size(), threads);
+  std::vector<std::vector<double>> part_reach(vertex_parts);
+  for_each_part(points.size(), vertex_parts, threads, [&](std::size_t part, std::size_t begin, std::size_t end) {
+    std::vector<double>& reach = part_reach[part];
+    reach.assign(m, 0.);
+    for(std::size_t v = begin; v < end; ++v)
+    {
+      const std::uint32_t c = clusters.cluster_of[v];
+      reach[c] = std::max(reach[c], squared_distance3(points[v], clusters.centroid[c]));
+    }
+  });
+  std::vector<double> reach = std::move(part_reach[0]);
+  for(std::size_t part = 1; part < vertex_parts; ++part)
+    for(std::size_t c = 0; c < m; ++c)
+      reach[c] = std::max(reach[c], part_reach[part][c]);
+  part_reach.clear();
   // The clusters in parts, one per thread, each its weights on its own, then joined in order.
   const std::size_t parts = index_parts(m, threads);
   std::vector<std::vector<Linear_weight>> part_weights(parts);
@@ -406,7 +441,8 @@ inline Linear_cluster_weights linear_cluster_weights(const std::vector<Vec3>& po
 // for any number.
 inline bool diffuse_bone_heat(const std::vector<Vec3>& points, const Surface_clusters& clusters,
                               const std::vector<double>& areas, const Heat_sources& sources, std::size_t bones,
-                              std::size_t k, std::vector<Bone_weights>& weights, unsigned threads)
+                              std::size_t k, Heat_system& system, std::vector<Bone_weights>& weights,
+                              unsigned threads)
 {
   constexpr double heat_constant = 1, nearest_distance = 0.1, smallest_area = 1e-6, negligible = 1e-4;
   const std::size_t m = clusters.number_of_clusters();
@@ -418,7 +454,7 @@ inline bool diffuse_bone_heat(const std::vector<Vec3>& points, const Surface_clu
   }
   Cluster_weights cluster_weights;
   // A cluster keeps weights well under what a vertex keeps: its gradient may raise them.
-  if(!solve_cluster_heat(clusters, heat, sources, bones, 0.01 * negligible, cluster_weights, threads))
+  if(!solve_cluster_heat(clusters, heat, sources, bones, 0.01 * negligible, system, cluster_weights, threads))
     return false;
   // The clusters' weights are few, the vertices many: each vertex reads its cluster's.
   const Linear_cluster_weights linear =
