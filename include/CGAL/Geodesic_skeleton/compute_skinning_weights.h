@@ -546,13 +546,15 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   // bones before the sharpening; then the k largest are kept.
   std::vector<Bone_weights> weights(n);
   heat_system_analysed.get();
-  report.heat_diffused = internal::diffuse_bone_heat(grid_points, clusters, areas, sources, bones,
-                                                     Bone_weights::capacity, heat_system, weights, threads);
-  internal::for_each_index(n, threads, [&](std::size_t v) {
+  auto finish = [&](std::size_t v) {
     internal::finish_weights(weights[v], sharpness, joint_of_bone, k, minimum_weight);
     if(weights[v].empty()) // the diffusion failed (it should not): the heating bone alone
       weights[v].push_back(sources.bone[clusters.cluster_of[v]], 1.f);
-  });
+  };
+  report.heat_diffused = internal::diffuse_bone_heat(grid_points, clusters, areas, sources, bones,
+                                                     Bone_weights::capacity, heat_system, weights, threads, finish);
+  if(!report.heat_diffused)
+    internal::for_each_index(n, threads, finish);
   for(std::size_t v = 0; v < n; ++v) // the output map, on the caller's thread: any map will do
   {
     put(weight_output, vertex_of[v], weights[v]);

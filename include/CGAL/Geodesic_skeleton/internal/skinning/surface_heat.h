@@ -102,6 +102,13 @@ std::vector<std::array<std::uint32_t, 3>> triangles_of(const FaceGraph& mesh, co
   std::vector<std::uint32_t> corners;
   for(auto f : faces(mesh))
   {
+    const auto h = halfedge(f, mesh), h1 = next(h, mesh), h2 = next(h1, mesh);
+    if(next(h2, mesh) == h) // a triangle: its corners in the order halfedges_around_face() gives
+    {
+      triangles.push_back({std::uint32_t(get(vim, target(h, mesh))), std::uint32_t(get(vim, target(h1, mesh))),
+                           std::uint32_t(get(vim, target(h2, mesh)))});
+      continue;
+    }
     corners.clear();
     for(auto h : halfedges_around_face(halfedge(f, mesh), mesh))
       corners.push_back(std::uint32_t(get(vim, target(h, mesh))));
@@ -435,14 +442,15 @@ inline Linear_cluster_weights linear_cluster_weights(const std::vector<Vec3>& po
 // vertex (`points`, grid coordinates) reads the weights of its cluster with their gradient
 // there. Distances below `nearest_distance` voxels count as that (a cluster on a bone),
 // areas below `smallest_area` square voxels as that (a cluster of degenerate triangles only,
-// or of none, still feels its heat source). Returns false when the factorisation fails (it
-// should not: the matrix is positive definite), leaving `weights` untouched. The solves and
-// the loops over clusters and vertices run on up to `threads` threads, with the same result
-// for any number.
-inline bool diffuse_bone_heat(const std::vector<Vec3>& points, const Surface_clusters& clusters,
-                              const std::vector<double>& areas, const Heat_sources& sources, std::size_t bones,
-                              std::size_t k, Heat_system& system, std::vector<Bone_weights>& weights,
-                              unsigned threads)
+// or of none, still feels its heat source). Each vertex's weights are then handed to
+// `finish(v)`, by the thread that read them. Returns false when the factorisation fails (it
+// should not: the matrix is positive definite), leaving `weights` untouched and `finish`
+// uncalled. The solves and the loops over clusters and vertices run on up to `threads`
+// threads, with the same result for any number.
+template <typename Finish>
+bool diffuse_bone_heat(const std::vector<Vec3>& points, const Surface_clusters& clusters,
+                       const std::vector<double>& areas, const Heat_sources& sources, std::size_t bones, std::size_t k,
+                       Heat_system& system, std::vector<Bone_weights>& weights, unsigned threads, const Finish& finish)
 {
   constexpr double heat_constant = 1, nearest_distance = 0.1, smallest_area = 1e-6, negligible = 1e-4;
   const std::size_t m = clusters.number_of_clusters();
@@ -468,6 +476,7 @@ inline bool diffuse_bone_heat(const std::vector<Vec3>& points, const Surface_clu
       if(const double at_v = std::min(1., lw.weight + dot3(lw.gradient, offset)); at_v > negligible)
         keep_largest(weights[v], k, lw.bone, float(at_v));
     }
+    finish(v);
   });
   return true;
 }
