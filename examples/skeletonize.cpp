@@ -16,6 +16,7 @@
 #include <CGAL/Geodesic_skeleton/IO/json.h>
 #include <CGAL/Geodesic_skeleton/IO/read_control_skeleton_json.h>
 #include <CGAL/Geodesic_skeleton/compute_skinning_weights.h>
+#include <CGAL/Geodesic_skeleton/internal/parallel_parts.h> // start_beside()
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -42,7 +43,6 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include <dlfcn.h>  // dlopen: the formats' plug-in
@@ -369,11 +369,12 @@ void write_weights_json(std::ostream& out, const Skinning& skinning)
   // after a comma but the array's first.
   constexpr std::size_t piece = 1 << 15;
   const std::size_t pieces = (mesh_vertex.size() + piece - 1) / piece;
+  auto piece_end = [&](std::size_t p) { return std::min(mesh_vertex.size(), (p + 1) * piece); };
   std::size_t most_pairs = 0; // in a piece
   for(std::size_t p = 0; p < pieces; ++p)
   {
     std::size_t pairs = 0;
-    for(std::size_t v = p * piece; v < std::min(mesh_vertex.size(), (p + 1) * piece); ++v)
+    for(std::size_t v = p * piece; v < piece_end(p); ++v)
       pairs += skinning.weights[mesh_vertex[v]].size();
     most_pairs = std::max(most_pairs, pairs);
   }
@@ -384,7 +385,7 @@ void write_weights_json(std::ostream& out, const Skinning& skinning)
   };
   auto write_piece = [&](int array, std::size_t p, bool first, Text& text) {
     char* c = text.bytes.get();
-    for(std::size_t v = p * piece; v < std::min(mesh_vertex.size(), (p + 1) * piece); ++v)
+    for(std::size_t v = p * piece; v < piece_end(p); ++v)
     {
       const gs::Bone_weights& w = skinning.weights[mesh_vertex[v]];
       for(std::size_t i = 0; i < w.size(); ++i)
@@ -411,17 +412,7 @@ void write_weights_json(std::ostream& out, const Skinning& skinning)
     {
       std::future<bool> following;
       if(p + 1 < pieces)
-      {
-        auto write_following = [&, p, first] { return write_piece(array, p + 1, first, next); };
-        try
-        {
-          following = std::async(std::launch::async, write_following);
-        }
-        catch(const std::system_error&) // no thread to start: this one writes it next
-        {
-          following = std::async(std::launch::deferred, write_following);
-        }
-      }
+        following = gs::internal::start_beside(2, [&, p, first] { return write_piece(array, p + 1, first, next); });
       out.write(ready.bytes.get(), std::streamsize(ready.size));
       if(p + 1 < pieces)
       {
@@ -568,7 +559,7 @@ Mesh_summary skeletonize(const Options& o, const std::string& input, const std::
   // on a large mesh) is counted on the second core while the chain runs on the first (a
   // batch already keeps every core busy with meshes).
   std::future<nlohmann::json> mesh_entry =
-      std::async(o.batch.empty() && to_json ? std::launch::async : std::launch::deferred, [&mesh] { return mesh_json(mesh); });
+      gs::internal::start_beside(o.batch.empty() && to_json ? 2 : 1, [&mesh] { return mesh_json(mesh); });
   gs::Curve_skeleton<Point, vertex_descriptor> curve, thinned;
   gs::Reeb_graph<Mesh> reeb;
   gs::Control_skeleton<Point> control;

@@ -521,11 +521,12 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   internal::Heat_sources sources = finder.sources(
       [&](std::size_t c, std::uint32_t b) { return internal::distance_to_polyline(centres[c], polylines[b]); },
       threads);
-  std::vector<std::uint8_t> in_straight_line(m, 0);
+  for(std::size_t c = 0; c < m; ++c)
+    if(sources.bone[c] == internal::Heat_source_finder::none)
+      report.vertices_bound_in_straight_line += clusters.size[c];
   internal::for_each_index(m, threads, [&](std::size_t c) {
     if(sources.bone[c] != internal::Heat_source_finder::none)
       return;
-    in_straight_line[c] = 1;
     // No bone in the cluster's part of the solid: the bone nearest in straight line.
     sources.distance[c] = HUGE_VAL;
     for(std::size_t b = 0; b < bones; ++b)
@@ -535,9 +536,6 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
         sources.bone[c] = std::uint32_t(b);
       }
   });
-  for(std::size_t c = 0; c < m; ++c)
-    if(in_straight_line[c])
-      report.vertices_bound_in_straight_line += clusters.size[c];
 
   std::vector<std::uint32_t> joint_of_bone(bones);
   for(std::size_t b = 0; b < bones; ++b)

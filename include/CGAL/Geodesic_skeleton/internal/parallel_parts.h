@@ -107,9 +107,9 @@ void for_each_index(std::size_t count, unsigned threads, const Function& f)
 
 // Starts f() beside the caller's work: on a thread of its own when `threads` allows more
 // than one (and one can be started), otherwise when the result is asked for. The future's
-// get() waits for f and rethrows what it threw.
+// get() waits for f, gives what it returned and rethrows what it threw.
 template <typename Function>
-std::future<void> start_beside(unsigned threads, Function f)
+std::future<std::invoke_result_t<Function>> start_beside(unsigned threads, Function f)
 {
   if(threads > 1)
     try
