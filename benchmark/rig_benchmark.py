@@ -293,7 +293,7 @@ def skin_character(skeletonize, data, split, i, out, options, scale):
         with open(mesh) as f, open(scaled, 'w') as g:
             for line in f:
                 if line.startswith('v '):
-                    g.write('v %.9g %.9g %.9g\n' % tuple(scale * float(x) for x in line.split()[1:4]))
+                    g.write('v %.17g %.17g %.17g\n' % tuple(scale * float(x) for x in line.split()[1:4]))
                 else:
                     g.write(line)
         mesh = scaled

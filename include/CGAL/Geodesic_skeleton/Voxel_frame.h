@@ -69,13 +69,24 @@ public:
         p[c] += m_voxel_size * g[i] * m_axes[i][c];
     return p;
   }
-  /// The grid coordinates (unit: voxels) of the world point `p`.
+  /// The grid coordinates (unit: voxels) of the world point `p`, rounded to the nearest
+  /// multiple of `grid_quantum`.
+  ///
+  /// The rounding makes the grid coordinates of a mesh the same whatever its scale and
+  /// placement: scaled by 0.01 or 1000, its points' grid coordinates differ from the
+  /// original's by a few units in the last place, which would otherwise move the odd
+  /// vertex or triangle corner across a voxel's face; rounded, they are equal (unless one
+  /// lies within that difference of a rounding boundary, about once in 10^8 coordinates),
+  /// and so is everything computed from them.
   Vector to_grid(const Vector& p) const
   {
     const Vector d{p[0] - m_origin[0], p[1] - m_origin[1], p[2] - m_origin[2]};
-    return Vector{dot(d, m_axes[0]) / m_voxel_size, dot(d, m_axes[1]) / m_voxel_size,
-                  dot(d, m_axes[2]) / m_voxel_size};
+    return Vector{quantized(dot(d, m_axes[0]) / m_voxel_size), quantized(dot(d, m_axes[1]) / m_voxel_size),
+                  quantized(dot(d, m_axes[2]) / m_voxel_size)};
   }
+  /// The step to which to_grid() rounds grid coordinates, 2^-20 voxels: far below any
+  /// distance the stages tell apart, far above the rounding errors of a scaling.
+  static constexpr double grid_quantum = 1. / (1 << 20);
   /// The world point at the centre of voxel `k`.
   Vector centre(const Voxel_key& k) const
   {
@@ -105,6 +116,10 @@ public:
   }
 
 private:
+  static double quantized(double g)
+  {
+    return std::nearbyint(g / grid_quantum) * grid_quantum;
+  }
   static double dot(const Vector& a, const Vector& b)
   {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];

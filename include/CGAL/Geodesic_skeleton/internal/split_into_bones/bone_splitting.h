@@ -218,8 +218,7 @@ private:
         if(std::abs(m_s[k] - target) > bone / 4 || !longer_than_shortest(m_s[k] - m_s[previous], shortest) ||
            !longer_than_shortest(m_s[j] - m_s[k], shortest))
           continue;
-        if(best == j || m_r[k] < m_r[best] ||
-           (m_r[k] == m_r[best] && std::abs(m_s[k] - target) < std::abs(m_s[best] - target)))
+        if(best == j || narrower(k, best, target, bone))
           best = k;
       }
       if(best == j)
@@ -227,6 +226,19 @@ private:
       cuts.push_back(best);
       previous = best;
     }
+  }
+
+  // Whether point k is a better cut than point `best` for a cut at arc length `target`:
+  // narrower, or as narrow and nearer. Values equal up to rounding (relative, 1e-9) are
+  // equal: the smoothed radii of a straight bar of constant thickness differ only in their
+  // last bits, which a scaling of the mesh would change, and with them the cut.
+  bool narrower(std::size_t k, std::size_t best, double target, double bone) const
+  {
+    const double radius_rounding = 1e-9 * std::max(m_r[k], m_r[best]);
+    if(m_r[k] < m_r[best] - radius_rounding)
+      return true;
+    return m_r[k] <= m_r[best] + radius_rounding &&
+           std::abs(m_s[k] - target) < std::abs(m_s[best] - target) - 1e-9 * bone;
   }
 
   const std::vector<Vec3>& m_p;

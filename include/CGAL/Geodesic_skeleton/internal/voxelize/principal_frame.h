@@ -73,11 +73,15 @@ inline Principal_frame principal_frame(const std::vector<Triangle3>& world_trian
   // as large as the mesh), each value by the same expression at each use.
   // Each pass scales a triangle once and reads its area from the scaled corners (the
   // divisions are most of the function's time).
+  // The scaled coordinates are rounded to 2^-30, far above the rounding errors of a scaling
+  // or a translation of the mesh: the moments of a moved or scaled copy are then the same
+  // bit for bit, rounding noise included. A mirror-symmetric mesh has no third moment
+  // across its mirror plane but that noise, whose sign orients the axis.
   auto scaled = [&](const Triangle3& w) {
     Triangle3 t;
     for(int j = 0; j < 3; ++j)
       for(int c = 0; c < 3; ++c)
-        t[j][c] = (w[j][c] - centre[c]) / size;
+        t[j][c] = std::nearbyint((w[j][c] - centre[c]) / size * 0x1p30) * 0x1p-30;
     return t;
   };
   auto area_of = [](const Triangle3& t) {
