@@ -8,6 +8,7 @@
 /// The mapping between voxel keys and points of the mesh's own coordinates.
 
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
+#include <CGAL/Geodesic_skeleton/internal/nearest_integer.h>
 
 #include <array>
 #include <cmath>
@@ -37,7 +38,7 @@ public:
   ///      finite and positive.
   /// \throws std::invalid_argument when a precondition does not hold.
   Voxel_frame(const Vector& origin, const std::array<Vector, 3>& axes, double voxel_size)
-    : m_origin(origin), m_axes(axes), m_voxel_size(voxel_size)
+    : m_origin(origin), m_axes(axes), m_voxel_size(voxel_size), m_quanta_per_unit(1 / (grid_quantum * voxel_size))
   {
     if(!(voxel_size > 0) || !std::isfinite(voxel_size))
       throw std::invalid_argument("Voxel_frame: the voxel size must be finite and positive");
@@ -81,8 +82,7 @@ public:
   Vector to_grid(const Vector& p) const
   {
     const Vector d{p[0] - m_origin[0], p[1] - m_origin[1], p[2] - m_origin[2]};
-    return Vector{quantized(dot(d, m_axes[0]) / m_voxel_size), quantized(dot(d, m_axes[1]) / m_voxel_size),
-                  quantized(dot(d, m_axes[2]) / m_voxel_size)};
+    return Vector{quantized(dot(d, m_axes[0])), quantized(dot(d, m_axes[1])), quantized(dot(d, m_axes[2]))};
   }
   /// The step to which to_grid() rounds grid coordinates, 2^-20 voxels: far below any
   /// distance the stages tell apart, far above the rounding errors of a scaling.
@@ -116,10 +116,9 @@ public:
   }
 
 private:
-  static double quantized(double g)
-  {
-    return std::nearbyint(g / grid_quantum) * grid_quantum;
-  }
+  // The world length `w` along an axis in voxels, rounded to grid_quantum (a product, not
+  // a division, per coordinate).
+  double quantized(double w) const { return internal::nearest_integer(w * m_quanta_per_unit) * grid_quantum; }
   static double dot(const Vector& a, const Vector& b)
   {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
@@ -132,6 +131,7 @@ private:
   Vector m_origin{0., 0., 0.};
   std::array<Vector, 3> m_axes{Vector{1., 0., 0.}, Vector{0., 1., 0.}, Vector{0., 0., 1.}};
   double m_voxel_size = 1.;
+  double m_quanta_per_unit = 1. / grid_quantum;
 };
 
 } // namespace Geodesic_skeleton

@@ -4,6 +4,7 @@
 #ifndef CGAL_GEODESIC_SKELETON_INTERNAL_PRINCIPAL_FRAME_H
 #define CGAL_GEODESIC_SKELETON_INTERNAL_PRINCIPAL_FRAME_H
 
+#include <CGAL/Geodesic_skeleton/internal/nearest_integer.h>
 #include <CGAL/Geodesic_skeleton/internal/voxelize/triangle_box_overlap.h>
 
 #include <Eigen/Dense>
@@ -71,17 +72,17 @@ inline Principal_frame principal_frame(const std::vector<Triangle3>& world_trian
   }
   // The triangles are centred and scaled to unit size on the fly (a copy of them would be
   // as large as the mesh), each value by the same expression at each use.
-  // Each pass scales a triangle once and reads its area from the scaled corners (the
-  // divisions are most of the function's time).
+  // Each pass scales a triangle once and reads its area from the scaled corners.
   // The scaled coordinates are rounded to 2^-30, far above the rounding errors of a scaling
   // or a translation of the mesh: the moments of a moved or scaled copy are then the same
   // bit for bit, rounding noise included. A mirror-symmetric mesh has no third moment
   // across its mirror plane but that noise, whose sign orients the axis.
+  const double to_steps = 0x1p30 / size; // a product, not a division, per coordinate
   auto scaled = [&](const Triangle3& w) {
     Triangle3 t;
     for(int j = 0; j < 3; ++j)
       for(int c = 0; c < 3; ++c)
-        t[j][c] = std::nearbyint((w[j][c] - centre[c]) / size * 0x1p30) * 0x1p-30;
+        t[j][c] = nearest_integer((w[j][c] - centre[c]) * to_steps) * 0x1p-30;
     return t;
   };
   auto area_of = [](const Triangle3& t) {
