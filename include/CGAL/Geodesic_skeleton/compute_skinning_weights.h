@@ -135,22 +135,76 @@ void check_bones(const Control_skeleton<Point>& skeleton, const char* caller)
     throw std::invalid_argument(std::string(caller) + ": too many bones");
 }
 
-// Turns the diffused weights of a vertex into its skinning weights: raises each joint's
-// weight (the sum over the bones that leave it, which all turn about it) to the power
-// `exponent`, sharing it among those bones as before (the joint that leads keeps its lead
-// and the blend around a joint narrows); keeps the `k` largest, drops those under
-// `minimum` of their total (never the largest), and scales the rest to sum 1, by
-// decreasing weight (bone number for ties).
+// How much more a joint's heat counts than its child's, before the sharpening: at a joint,
+// artists paint the parent bone's weight past the joint into the child's bone (val: of the
+// vertices whose top joint was not the artist's, 4.6 % took the next joint down the chain and
+// 1.9 % the one above). Calibrated on train (1, 1.1, 1.15, 1.2: top joint right 0.868, 0.870,
+// 0.871, 0.870, L1 0.2886, 0.2885, 0.2911, 0.2915).
+inline constexpr double parent_joint_preference = 1.1;
+
+// The depth of each joint below the joints without a parent bone (0), along the bones.
+template <typename Point, typename Bone>
+std::vector<std::uint32_t> joint_depths(const Control_skeleton<Point>& skeleton, const std::vector<Bone>& bones)
+{
+  const std::size_t joints = num_vertices(skeleton);
+  std::vector<std::vector<std::uint32_t>> children(joints);
+  std::vector<bool> has_parent(joints, false);
+  for(const Bone& b : bones)
+  {
+    children[source(b, skeleton)].push_back(std::uint32_t(target(b, skeleton)));
+    has_parent[target(b, skeleton)] = true;
+  }
+  constexpr std::uint32_t unreached = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> depth(joints, unreached), queue;
+  for(std::uint32_t j = 0; j < joints; ++j)
+    if(!has_parent[j])
+    {
+      depth[j] = 0;
+      queue.push_back(j);
+    }
+  for(std::size_t q = 0; q < queue.size(); ++q)
+    for(std::uint32_t c : children[queue[q]])
+      if(depth[c] == unreached)
+      {
+        depth[c] = depth[queue[q]] + 1;
+        queue.push_back(c);
+      }
+  for(std::uint32_t& d : depth) // joints on a loop without a parentless joint
+    if(d == unreached)
+      d = 0;
+  return depth;
+}
+
+// Turns the diffused weights of a vertex into its skinning weights: divides each joint's
+// weight (the sum over the bones that leave it, which all turn about it) by
+// parent_joint_preference to the power of its depth below the vertex's shallowest joint,
+// raises it to the power `exponent`, sharing it among those bones as before (the joint
+// that leads keeps its lead and the blend around a joint narrows); keeps the `k` largest,
+// drops those under `minimum` of their total (never the largest), and scales the rest to
+// sum 1, by decreasing weight (bone number for ties).
 inline void finish_weights(Bone_weights& weights, double exponent, const std::vector<std::uint32_t>& joint_of_bone,
-                           std::size_t k, double minimum)
+                           const std::vector<std::uint32_t>& joint_depth, std::size_t k, double minimum)
 {
   const std::size_t n = weights.size();
   if(n == 0)
     return;
   std::array<std::uint32_t, Bone_weights::capacity> joint{};
   std::array<float, Bone_weights::capacity> sharpened{};
+  std::uint32_t shallowest = std::numeric_limits<std::uint32_t>::max();
   for(std::size_t i = 0; i < n; ++i)
+  {
     joint[i] = joint_of_bone[weights.bone[i]];
+    shallowest = std::min(shallowest, joint_depth[joint[i]]);
+  }
+  // 1 / parent_joint_preference^d, for d up to 255 (1.1^-255 is 3e-11: deeper, the same).
+  static const std::array<float, 256> preference = [] {
+    std::array<float, 256> p{};
+    for(std::size_t d = 0; d < p.size(); ++d)
+      p[d] = float(std::pow(parent_joint_preference, -double(d)));
+    return p;
+  }();
+  for(std::size_t i = 0; i < n; ++i)
+    weights.weight[i] *= preference[std::min<std::size_t>(joint_depth[joint[i]] - shallowest, preference.size() - 1)];
   for(std::size_t i = 0; i < n; ++i)
   {
     double joint_total = 0;
@@ -540,12 +594,13 @@ Skinning_report compute_skinning_weights(const TriangleMesh& mesh, const Control
   std::vector<std::uint32_t> joint_of_bone(bones);
   for(std::size_t b = 0; b < bones; ++b)
     joint_of_bone[b] = std::uint32_t(source(numbered[b], skeleton));
+  const std::vector<std::uint32_t> joint_depth = internal::joint_depths(skeleton, numbered);
   // The diffusion keeps all the bones a vertex holds, so that a joint's share counts all its
   // bones before the sharpening; then the k largest are kept.
   std::vector<Bone_weights> weights(n);
   heat_system_analysed.get();
   auto finish = [&](std::size_t v) {
-    internal::finish_weights(weights[v], sharpness, joint_of_bone, k, minimum_weight);
+    internal::finish_weights(weights[v], sharpness, joint_of_bone, joint_depth, k, minimum_weight);
     if(weights[v].empty()) // the diffusion failed (it should not): the heating bone alone
       weights[v].push_back(sources.bone[clusters.cluster_of[v]], 1.f);
   };
