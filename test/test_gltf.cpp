@@ -278,6 +278,69 @@ BOOST_AUTO_TEST_CASE(a_gltf_file_embeds_its_buffer_and_reads_back)
   std::remove(path.c_str());
 }
 
+BOOST_AUTO_TEST_CASE(a_box_of_quads_with_five_bones_per_vertex_reads_back)
+{
+  // A 2 x 2 x 2 box of six quads; every vertex weighted by five bones of a chain (the fifth
+  // goes to a second set of four), vertex 0 with bone 0 twice (the two add up).
+  Mesh box;
+  std::vector<Mesh::Vertex_index> v;
+  for(int k = 0; k < 8; ++k)
+    v.push_back(box.add_vertex(Point(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1)));
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for(const auto& q : quads)
+    BOOST_REQUIRE(box.add_face(v[q[0]], v[q[1]], v[q[2]], v[q[3]]) != Mesh::null_face());
+  const Control skeleton = shapes::chain_skeleton(
+      {Point(0, 0, -1), Point(0, 0, -0.6), Point(0, 0, -0.2), Point(0, 0, 0.2), Point(0, 0, 0.6), Point(0, 0, 1)});
+  std::vector<gs::Bone_weights> weights(8);
+  for(std::size_t i = 0; i < 8; ++i)
+    for(std::uint32_t b = 0; b < 5; ++b)
+      weights[i].push_back((b + i) % 5, float(b + 1));
+  weights[0].push_back(0, 3.f);
+  const std::string path = temporary_path("box.glb");
+  gs::IO::write_glTF(path, box, skeleton, boost::make_iterator_property_map(weights.begin(), get(CGAL::vertex_index, box)));
+  const tinygltf::Model m = load(path);
+  std::remove(path.c_str());
+  const tinygltf::Primitive& primitive = m.meshes.at(0).primitives.at(0);
+
+  // Two triangles per quad, facing out of the box, covering its area.
+  const auto positions = accessor_values<float>(m, primitive.attributes.at("POSITION"), 3);
+  const auto indices = accessor_values<std::uint32_t>(m, primitive.indices, 1);
+  BOOST_REQUIRE_EQUAL(indices.size(), 36u);
+  double area = 0;
+  for(std::size_t t = 0; t < indices.size(); t += 3)
+  {
+    Eigen::Vector3d p[3];
+    for(int c = 0; c < 3; ++c)
+    {
+      BOOST_REQUIRE_LT(indices[t + c], 8u);
+      p[c] = Eigen::Vector3d(positions[3 * indices[t + c]], positions[3 * indices[t + c] + 1], positions[3 * indices[t + c] + 2]);
+    }
+    const Eigen::Vector3d normal = (p[1] - p[0]).cross(p[2] - p[0]);
+    area += normal.norm() / 2;
+    BOOST_CHECK_GT(normal.dot(p[0] + p[1] + p[2]), 0); // outwards: the centre is the origin
+  }
+  BOOST_CHECK_SMALL(area - 24, 1e-9);
+
+  // The weights read back over both sets, scaled to sum 1.
+  BOOST_REQUIRE(primitive.attributes.count("JOINTS_1") && !primitive.attributes.count("JOINTS_2"));
+  std::vector<std::map<int, double>> read(8);
+  for(int set = 0; set < 2; ++set)
+  {
+    const auto joints = accessor_values<std::uint16_t>(m, primitive.attributes.at("JOINTS_" + std::to_string(set)), 4);
+    const auto values = accessor_values<float>(m, primitive.attributes.at("WEIGHTS_" + std::to_string(set)), 4);
+    for(std::size_t k = 0; k < values.size(); ++k)
+      if(values[k] > 0)
+        read[k / 4][joints[k]] += values[k];
+  }
+  for(std::size_t i = 0; i < 8; ++i)
+  {
+    const double total = i == 0 ? 18 : 15;
+    BOOST_REQUIRE_EQUAL(read[i].size(), 5u);
+    for(std::uint32_t b = 0; b < 5; ++b)
+      BOOST_CHECK_SMALL(read[i][int((b + i) % 5)] - ((b + 1) + (i == 0 && (b + i) % 5 == 0 ? 3 : 0)) / total, 1e-6);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(bending_a_bar_at_its_middle_joint_moves_its_end_rigidly_and_tears_nothing)
 {
   const Mesh bar = shapes::bar();

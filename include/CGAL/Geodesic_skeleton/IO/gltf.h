@@ -8,8 +8,8 @@
 /// Writes a mesh, its control skeleton and its skinning weights as a skinned glTF 2.0 file
 /// (`.glb` or `.gltf`), with tinygltf.
 ///
-/// This header needs tinygltf (`tiny_gltf.h`, which includes nlohmann's `json.hpp`); the
-/// rest of the package does not, and the umbrella header `CGAL/Geodesic_skeleton.h` does
+/// This header needs tinygltf (`tiny_gltf.h`) and nlohmann's `json.hpp`; the rest of the
+/// package does not, and the umbrella header `CGAL/Geodesic_skeleton.h` does
 /// not include it. tinygltf's functions must be compiled once in the program: link the
 /// compiled library that distributions ship (Debian's `libtinygltf-dev`: CMake
 /// `find_package(TinyGLTF)`, target `TinyGLTF::TinyGLTF`), or, with the header-only
@@ -29,6 +29,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/number_utils.h>
 
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -76,6 +77,33 @@ int add_gltf_accessor(tinygltf::Model& model, const std::vector<T>& values, std:
   accessor.type = type;
   model.accessors.push_back(accessor);
   return int(model.accessors.size() - 1);
+}
+
+// Writes the binary glTF container: the 12-byte header, then the JSON chunk (padded with
+// spaces) and the binary chunk (padded with zeros), each to a multiple of 4 bytes, lengths
+// in little-endian order.
+inline void write_glb(std::ostream& os, const std::string& json, const std::vector<unsigned char>& buffer)
+{
+  auto put_uint32 = [&os](std::uint32_t value) {
+    const char bytes[4] = {char(value & 0xff), char((value >> 8) & 0xff), char((value >> 16) & 0xff),
+                           char((value >> 24) & 0xff)};
+    os.write(bytes, 4);
+  };
+  const std::size_t json_length = (json.size() + 3) / 4 * 4, buffer_length = (buffer.size() + 3) / 4 * 4;
+  const std::size_t total = 12 + 8 + json_length + 8 + buffer_length;
+  if(total > std::numeric_limits<std::uint32_t>::max())
+    throw std::invalid_argument("write_glTF: the model is larger than the 4 GiB a .glb file can hold");
+  put_uint32(0x46546C67); // "glTF"
+  put_uint32(2);
+  put_uint32(std::uint32_t(total));
+  put_uint32(std::uint32_t(json_length));
+  put_uint32(0x4E4F534A); // "JSON"
+  os.write(json.data(), std::streamsize(json.size()));
+  os.write("   ", std::streamsize(json_length - json.size()));
+  put_uint32(std::uint32_t(buffer_length));
+  put_uint32(0x004E4942); // "BIN"
+  os.write(reinterpret_cast<const char*>(buffer.data()), std::streamsize(buffer.size()));
+  os.write("\0\0\0", std::streamsize(buffer_length - buffer.size()));
 }
 
 template <typename Point>
@@ -135,39 +163,47 @@ tinygltf::Model skinned_glTF_model(const TriangleMesh& mesh, const Control_skele
       high[std::size_t(a)] = std::max(high[std::size_t(a)], double(float(c[a])));
     }
   }
+  // The triangles: a triangle face as it is, a polygon split as the voxel stages split it
+  // (a quad or an n-gon, convex or not).
   std::vector<std::uint32_t> indices;
+  indices.reserve(3 * std::size_t(num_faces(mesh)));
   std::vector<std::uint32_t> corners;
   std::vector<Geodesic_skeleton::internal::Vec3> corner_points;
   std::vector<Geodesic_skeleton::internal::Corner_triple> polygon;
   for(auto f : faces(mesh))
   {
     corners.clear();
-    corner_points.clear();
     for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+      corners.push_back(std::uint32_t(get(vim, v)));
+    if(corners.size() == 3)
     {
-      const std::uint32_t i = std::uint32_t(get(vim, v));
-      corners.push_back(i);
-      corner_points.push_back({double(positions[3 * i]), double(positions[3 * i + 1]), double(positions[3 * i + 2])});
+      indices.insert(indices.end(), corners.begin(), corners.end());
+      continue;
     }
-    polygon.clear(); // a quad or an n-gon, convex or not, as the voxel stages split it
+    corner_points.clear();
+    for(std::uint32_t i : corners)
+      corner_points.push_back({double(positions[3 * i]), double(positions[3 * i + 1]), double(positions[3 * i + 2])});
+    polygon.clear();
     Geodesic_skeleton::internal::append_polygon_triangles(corner_points, polygon);
     for(const auto& triple : polygon)
+      for(std::size_t k : triple)
+        indices.push_back(corners[k]);
+  }
+  // The area-weighted normal of each triangle, added to its corners.
+  for(std::size_t k = 0; k < indices.size(); k += 3)
+  {
+    const std::uint32_t* t = &indices[k];
+    double e[2][3];
+    for(int a = 0; a < 3; ++a)
     {
-      const std::uint32_t t[3] = {corners[triple[0]], corners[triple[1]], corners[triple[2]]};
-      indices.insert(indices.end(), t, t + 3);
-      // The area-weighted normal of the triangle, added to its corners.
-      double e[2][3];
-      for(int a = 0; a < 3; ++a)
-      {
-        e[0][a] = double(positions[3 * t[1] + std::size_t(a)]) - positions[3 * t[0] + std::size_t(a)];
-        e[1][a] = double(positions[3 * t[2] + std::size_t(a)]) - positions[3 * t[0] + std::size_t(a)];
-      }
-      const double normal[3] = {e[0][1] * e[1][2] - e[0][2] * e[1][1], e[0][2] * e[1][0] - e[0][0] * e[1][2],
-                                e[0][0] * e[1][1] - e[0][1] * e[1][0]};
-      for(std::uint32_t corner : t)
-        for(int a = 0; a < 3; ++a)
-          normal_sums[3 * corner + std::size_t(a)] += normal[a];
+      e[0][a] = double(positions[3 * t[1] + std::size_t(a)]) - positions[3 * t[0] + std::size_t(a)];
+      e[1][a] = double(positions[3 * t[2] + std::size_t(a)]) - positions[3 * t[0] + std::size_t(a)];
     }
+    const double normal[3] = {e[0][1] * e[1][2] - e[0][2] * e[1][1], e[0][2] * e[1][0] - e[0][0] * e[1][2],
+                              e[0][0] * e[1][1] - e[0][1] * e[1][0]};
+    for(int c = 0; c < 3; ++c)
+      for(int a = 0; a < 3; ++a)
+        normal_sums[3 * t[c] + std::size_t(a)] += normal[a];
   }
   if(indices.empty())
     throw std::invalid_argument(caller + ": the mesh has no faces");
@@ -191,13 +227,16 @@ tinygltf::Model skinned_glTF_model(const TriangleMesh& mesh, const Control_skele
                                                   TINYGLTF_TYPE_SCALAR, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
 
   // The influences of each vertex: bone b is the skin's joint b (the node at its head, see
-  // below). Sets of four, as many as needed.
-  std::vector<std::vector<std::pair<std::uint16_t, double>>> influences(n);
-  std::size_t most = 1;
+  // below). Sets of four, as many as the vertex with the most needs (a set is added, zero
+  // for the vertices before, when a vertex needs it).
+  std::vector<std::vector<std::uint16_t>> joint_sets;
+  std::vector<std::vector<float>> weight_sets;
+  std::array<std::pair<std::uint16_t, double>, Bone_weights::capacity> influence;
   for(auto v : vertices(mesh))
   {
     const std::size_t i = get(vim, v);
     const Bone_weights w = get(weights, v);
+    std::size_t count = 0;
     double total = 0;
     for(std::size_t k = 0; k < w.size(); ++k)
     {
@@ -207,36 +246,35 @@ tinygltf::Model skinned_glTF_model(const TriangleMesh& mesh, const Control_skele
       if(!(w.weight[k] >= 0) || !std::isfinite(w.weight[k]))
         throw std::invalid_argument(caller + ": vertex " + std::to_string(i) + " has a negative or non-finite weight");
       // glTF allows one non-zero weight per joint and vertex: repeated bones add up.
-      auto& list = influences[i];
       const auto joint = std::uint16_t(w.bone[k]);
-      auto same = std::find_if(list.begin(), list.end(), [&](const auto& e) { return e.first == joint; });
-      if(same != list.end())
+      auto same = std::find_if(influence.begin(), influence.begin() + count,
+                               [&](const auto& e) { return e.first == joint; });
+      if(same != influence.begin() + count)
         same->second += w.weight[k];
       else if(w.weight[k] > 0)
-        list.emplace_back(joint, w.weight[k]);
+        influence[count++] = {joint, w.weight[k]};
       total += w.weight[k];
     }
     if(!(total > 0))
       throw std::invalid_argument(caller + ": vertex " + std::to_string(i) + " has no weight");
-    for(auto& e : influences[i])
-      e.second /= total;
-    most = std::max(most, influences[i].size());
+    while(4 * joint_sets.size() < count)
+    {
+      joint_sets.emplace_back(4 * n, std::uint16_t(0));
+      weight_sets.emplace_back(4 * n, 0.f);
+    }
+    for(std::size_t k = 0; k < count; ++k)
+    {
+      joint_sets[k / 4][4 * i + k % 4] = influence[k].first;
+      weight_sets[k / 4][4 * i + k % 4] = float(influence[k].second / total);
+    }
   }
-  for(std::size_t set = 0; set * 4 < most; ++set)
+  for(std::size_t set = 0; set < joint_sets.size(); ++set)
   {
-    std::vector<std::uint16_t> joint_indices(4 * n, 0);
-    std::vector<float> joint_weights(4 * n, 0.f);
-    for(std::size_t i = 0; i < n; ++i)
-      for(std::size_t k = 4 * set; k < std::min(influences[i].size(), 4 * set + 4); ++k)
-      {
-        joint_indices[4 * i + k - 4 * set] = influences[i][k].first;
-        joint_weights[4 * i + k - 4 * set] = float(influences[i][k].second);
-      }
     primitive.attributes["JOINTS_" + std::to_string(set)] =
-        internal::add_gltf_accessor(model, joint_indices, n, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+        internal::add_gltf_accessor(model, joint_sets[set], n, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
                                     TINYGLTF_TYPE_VEC4, TINYGLTF_TARGET_ARRAY_BUFFER);
     primitive.attributes["WEIGHTS_" + std::to_string(set)] = internal::add_gltf_accessor(
-        model, joint_weights, n, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, TINYGLTF_TARGET_ARRAY_BUFFER);
+        model, weight_sets[set], n, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, TINYGLTF_TARGET_ARRAY_BUFFER);
   }
   tinygltf::Mesh gltf_mesh;
   gltf_mesh.name = "mesh";
@@ -338,9 +376,26 @@ std::ostream& write_glTF(std::ostream& os, const TriangleMesh& mesh, const Contr
                          WeightMap weights, bool binary,
                          const NamedParameters& np = CGAL::parameters::default_values())
 {
-  const tinygltf::Model model = skinned_glTF_model(mesh, skeleton, weights, np);
+  tinygltf::Model model = skinned_glTF_model(mesh, skeleton, weights, np);
   tinygltf::TinyGLTF writer;
-  if(!writer.WriteGltfSceneToStream(&model, os, !binary, binary) || !os)
+  if(!binary)
+  {
+    if(!writer.WriteGltfSceneToStream(&model, os, true, false) || !os)
+      throw std::runtime_error("write_glTF: cannot write the stream");
+    return os;
+  }
+  // The GLB container is written here: tinygltf's writer copies the buffer (the size of the
+  // mesh and its weights) before writing it. tinygltf gives the JSON of the model without
+  // its buffer, and the buffer's entry is added back.
+  const std::vector<unsigned char> buffer = std::move(model.buffers[0].data);
+  model.buffers.clear();
+  std::ostringstream text;
+  if(!writer.WriteGltfSceneToStream(&model, text, false, false))
+    throw std::runtime_error("write_glTF: cannot write the model's JSON");
+  nlohmann::json json = nlohmann::json::parse(text.str());
+  json["buffers"] = nlohmann::json::array({{{"byteLength", buffer.size()}}});
+  internal::write_glb(os, json.dump(), buffer);
+  if(!os)
     throw std::runtime_error("write_glTF: cannot write the stream");
   return os;
 }
