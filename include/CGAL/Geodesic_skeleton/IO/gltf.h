@@ -52,9 +52,9 @@ namespace IO {
 namespace internal {
 
 // Appends `values` to the model's one buffer (4-byte aligned) as a buffer view and an
-// accessor of `count` elements; returns the accessor's index.
+// accessor of `count` elements, and frees them; returns the accessor's index.
 template <typename T>
-int add_gltf_accessor(tinygltf::Model& model, const std::vector<T>& values, std::size_t count, int component_type,
+int add_gltf_accessor(tinygltf::Model& model, std::vector<T> values, std::size_t count, int component_type,
                       int type, int target)
 {
   std::vector<unsigned char>& data = model.buffers[0].data;
@@ -214,17 +214,7 @@ tinygltf::Model skinned_glTF_model(const TriangleMesh& mesh, const Control_skele
     for(std::size_t a = 0; a < 3; ++a)
       normals[3 * i + a] = length > 0 && std::isfinite(length) ? float(s[a] / length) : a == 2 ? 1.f : 0.f;
   }
-
-  tinygltf::Primitive primitive;
-  primitive.mode = TINYGLTF_MODE_TRIANGLES;
-  primitive.attributes["POSITION"] = internal::add_gltf_accessor(
-      model, positions, n, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER);
-  model.accessors.back().minValues = low;
-  model.accessors.back().maxValues = high;
-  primitive.attributes["NORMAL"] = internal::add_gltf_accessor(
-      model, normals, n, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER);
-  primitive.indices = internal::add_gltf_accessor(model, indices, indices.size(), TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
-                                                  TINYGLTF_TYPE_SCALAR, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  std::vector<double>().swap(normal_sums);
 
   // The influences of each vertex: bone b is the skin's joint b (the node at its head, see
   // below). Sets of four, as many as the vertex with the most needs (a set is added, zero
@@ -268,13 +258,33 @@ tinygltf::Model skinned_glTF_model(const TriangleMesh& mesh, const Control_skele
       weight_sets[k / 4][4 * i + k % 4] = float(influence[k].second / total);
     }
   }
+
+  // The buffer, reserved whole (growing it would copy it), takes each array in turn, which is
+  // then freed: the memory holds about one copy of the data at a time.
+  auto aligned = [](std::size_t bytes) { return (bytes + 3) / 4 * 4; };
+  model.buffers[0].data.reserve(2 * aligned(12 * n) + aligned(4 * indices.size()) +
+                                joint_sets.size() * (aligned(8 * n) + aligned(16 * n)) +
+                                64 * (num_edges(skeleton) + joints));
+  tinygltf::Primitive primitive;
+  primitive.mode = TINYGLTF_MODE_TRIANGLES;
+  primitive.attributes["POSITION"] = internal::add_gltf_accessor(
+      model, std::move(positions), n, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER);
+  model.accessors.back().minValues = low;
+  model.accessors.back().maxValues = high;
+  primitive.attributes["NORMAL"] = internal::add_gltf_accessor(
+      model, std::move(normals), n, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER);
+  const std::size_t index_count = indices.size();
+  primitive.indices = internal::add_gltf_accessor(model, std::move(indices), index_count,
+                                                  TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
+                                                  TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
   for(std::size_t set = 0; set < joint_sets.size(); ++set)
   {
     primitive.attributes["JOINTS_" + std::to_string(set)] =
-        internal::add_gltf_accessor(model, joint_sets[set], n, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+        internal::add_gltf_accessor(model, std::move(joint_sets[set]), n, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
                                     TINYGLTF_TYPE_VEC4, TINYGLTF_TARGET_ARRAY_BUFFER);
-    primitive.attributes["WEIGHTS_" + std::to_string(set)] = internal::add_gltf_accessor(
-        model, weight_sets[set], n, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, TINYGLTF_TARGET_ARRAY_BUFFER);
+    primitive.attributes["WEIGHTS_" + std::to_string(set)] =
+        internal::add_gltf_accessor(model, std::move(weight_sets[set]), n, TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                    TINYGLTF_TYPE_VEC4, TINYGLTF_TARGET_ARRAY_BUFFER);
   }
   tinygltf::Mesh gltf_mesh;
   gltf_mesh.name = "mesh";
@@ -339,7 +349,7 @@ tinygltf::Model skinned_glTF_model(const TriangleMesh& mesh, const Control_skele
     }
   }
   skin.inverseBindMatrices =
-      internal::add_gltf_accessor(model, inverse_bind, nodes, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_MAT4, 0);
+      internal::add_gltf_accessor(model, std::move(inverse_bind), nodes, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_MAT4, 0);
   tinygltf::Scene scene;
   if(tree.roots.size() == 1)
     skin.skeleton = int(root_node[tree.roots.front()]);
