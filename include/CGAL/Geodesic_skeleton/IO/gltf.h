@@ -106,6 +106,29 @@ inline void write_glb(std::ostream& os, const std::string& json, const std::vect
   os.write("\0\0\0", std::streamsize(buffer_length - buffer.size()));
 }
 
+// Writes `model` to `os`, as a .glb when `binary`, else as JSON with the buffer embedded.
+// A .glb's container is written here: tinygltf's writer copies the buffer (the size of the
+// mesh and its weights) before writing it. tinygltf gives the JSON of the model without its
+// buffer (which `model` then no longer holds), and the buffer's entry is added back.
+inline void write_gltf_model(std::ostream& os, tinygltf::Model& model, bool binary)
+{
+  tinygltf::TinyGLTF writer;
+  if(!binary)
+  {
+    if(!writer.WriteGltfSceneToStream(&model, os, true, false))
+      throw std::runtime_error("write_glTF: cannot write the stream");
+    return;
+  }
+  const std::vector<unsigned char> buffer = std::move(model.buffers[0].data);
+  model.buffers.clear();
+  std::ostringstream text;
+  if(!writer.WriteGltfSceneToStream(&model, text, false, false))
+    throw std::runtime_error("write_glTF: cannot write the model's JSON");
+  nlohmann::json json = nlohmann::json::parse(text.str());
+  json["buffers"] = nlohmann::json::array({{{"byteLength", buffer.size()}}});
+  write_glb(os, json.dump(), buffer);
+}
+
 template <typename Point>
 std::array<double, 3> joint_position(const Control_joint<Point>& joint)
 {
@@ -387,24 +410,7 @@ std::ostream& write_glTF(std::ostream& os, const TriangleMesh& mesh, const Contr
                          const NamedParameters& np = CGAL::parameters::default_values())
 {
   tinygltf::Model model = skinned_glTF_model(mesh, skeleton, weights, np);
-  tinygltf::TinyGLTF writer;
-  if(!binary)
-  {
-    if(!writer.WriteGltfSceneToStream(&model, os, true, false) || !os)
-      throw std::runtime_error("write_glTF: cannot write the stream");
-    return os;
-  }
-  // The GLB container is written here: tinygltf's writer copies the buffer (the size of the
-  // mesh and its weights) before writing it. tinygltf gives the JSON of the model without
-  // its buffer, and the buffer's entry is added back.
-  const std::vector<unsigned char> buffer = std::move(model.buffers[0].data);
-  model.buffers.clear();
-  std::ostringstream text;
-  if(!writer.WriteGltfSceneToStream(&model, text, false, false))
-    throw std::runtime_error("write_glTF: cannot write the model's JSON");
-  nlohmann::json json = nlohmann::json::parse(text.str());
-  json["buffers"] = nlohmann::json::array({{{"byteLength", buffer.size()}}});
-  internal::write_glb(os, json.dump(), buffer);
+  internal::write_gltf_model(os, model, binary);
   if(!os)
     throw std::runtime_error("write_glTF: cannot write the stream");
   return os;
@@ -477,10 +483,12 @@ void write_glTF(const std::string& path, const TriangleMesh& mesh, const Control
   const std::string extension = internal::file_extension(path);
   if(extension != "glb" && extension != "gltf")
     throw std::invalid_argument("write_glTF: " + path + ": the file must end with .glb or .gltf");
-  std::ostringstream content;
-  write_glTF(content, mesh, skeleton, weights, extension == "glb", np);
+  // The model first, so that bad input leaves no file; then straight into the file.
+  tinygltf::Model model = skinned_glTF_model(mesh, skeleton, weights, np);
   std::ofstream out(path, std::ios::binary);
-  if(!out || !(out << content.str()) || !out.flush())
+  if(out)
+    internal::write_gltf_model(out, model, extension == "glb");
+  if(!out || !out.flush())
     throw std::runtime_error(path + ": cannot write the file");
 }
 
