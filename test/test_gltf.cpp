@@ -410,6 +410,8 @@ BOOST_AUTO_TEST_CASE(bad_skeletons_and_paths_are_refused)
   Control cycle = skeleton;
   add_edge(2, 0, cycle);
   BOOST_CHECK_THROW(gs::IO::write_glTF(out, bar, cycle, map, true), std::invalid_argument);
+  BOOST_CHECK_THROW(gs::IO::write_glTF("cycle.glb", bar, cycle, map), std::invalid_argument);
+  BOOST_CHECK(!std::ifstream("cycle.glb")); // refused before the file is made
   Control two_parents = skeleton;
   add_edge(0, 2, two_parents);
   BOOST_CHECK_THROW(gs::IO::write_glTF(out, bar, two_parents, map, true), std::invalid_argument);

@@ -37,6 +37,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <limits>
@@ -51,6 +52,9 @@ namespace Geodesic_skeleton {
 namespace IO {
 namespace internal {
 
+// `bytes` rounded up to a multiple of 4, the alignment of glTF's buffer views and chunks.
+inline std::size_t aligned_to_4(std::size_t bytes) { return (bytes + 3) / 4 * 4; }
+
 // Appends `values` to the model's one buffer (4-byte aligned) as a buffer view and an
 // accessor of `count` elements, and frees them; returns the accessor's index.
 template <typename T>
@@ -58,7 +62,7 @@ int add_gltf_accessor(tinygltf::Model& model, std::vector<T> values, std::size_t
                       int type, int target)
 {
   std::vector<unsigned char>& data = model.buffers[0].data;
-  data.resize((data.size() + 3) / 4 * 4, 0);
+  data.resize(aligned_to_4(data.size()), 0);
   tinygltf::BufferView view;
   view.buffer = 0;
   view.byteOffset = data.size();
@@ -89,7 +93,7 @@ inline void write_glb(std::ostream& os, const std::string& json, const std::vect
                            char((value >> 24) & 0xff)};
     os.write(bytes, 4);
   };
-  const std::size_t json_length = (json.size() + 3) / 4 * 4, buffer_length = (buffer.size() + 3) / 4 * 4;
+  const std::size_t json_length = aligned_to_4(json.size()), buffer_length = aligned_to_4(buffer.size());
   const std::size_t total = 12 + 8 + json_length + 8 + buffer_length;
   if(total > std::numeric_limits<std::uint32_t>::max())
     throw std::invalid_argument("write_glTF: the model is larger than the 4 GiB a .glb file can hold");
@@ -284,9 +288,9 @@ tinygltf::Model skinned_glTF_model(const TriangleMesh& mesh, const Control_skele
 
   // The buffer, reserved whole (growing it would copy it), takes each array in turn, which is
   // then freed: the memory holds about one copy of the data at a time.
-  auto aligned = [](std::size_t bytes) { return (bytes + 3) / 4 * 4; };
-  model.buffers[0].data.reserve(2 * aligned(12 * n) + aligned(4 * indices.size()) +
-                                joint_sets.size() * (aligned(8 * n) + aligned(16 * n)) +
+  using internal::aligned_to_4;
+  model.buffers[0].data.reserve(2 * aligned_to_4(12 * n) + aligned_to_4(4 * indices.size()) +
+                                joint_sets.size() * (aligned_to_4(8 * n) + aligned_to_4(16 * n)) +
                                 64 * (num_edges(skeleton) + joints));
   tinygltf::Primitive primitive;
   primitive.mode = TINYGLTF_MODE_TRIANGLES;
@@ -471,8 +475,9 @@ std::ostream& write_glTF(std::ostream& os, const TriangleMesh& mesh, const Contr
 /// \throws std::invalid_argument for another extension, a skeleton without joint or whose
 ///         bones do not form trees (two bones to one joint, a bone from a joint to itself,
 ///         a cycle), more than 65535 nodes, a weight for a bone that does not exist, a vertex without
-///         weight, a non-finite coordinate, a mesh without faces.
-/// \throws std::runtime_error "PATH: cannot write the file" when writing fails.
+///         weight, a non-finite coordinate, a mesh without faces, a `.glb` over 4 GiB.
+/// \throws std::runtime_error "PATH: cannot write the file" when writing fails. No file is
+///         left after either.
 ///
 /// \b Complexity: O(N + F + J) for N vertices, F faces and J joints.
 template <typename TriangleMesh, typename Point, typename WeightMap,
@@ -483,13 +488,24 @@ void write_glTF(const std::string& path, const TriangleMesh& mesh, const Control
   const std::string extension = internal::file_extension(path);
   if(extension != "glb" && extension != "gltf")
     throw std::invalid_argument("write_glTF: " + path + ": the file must end with .glb or .gltf");
-  // The model first, so that bad input leaves no file; then straight into the file.
+  // The model first, then straight into the file; a failure while writing (a model too
+  // large for a .glb, a full disk) removes the part written, so that no file is left.
   tinygltf::Model model = skinned_glTF_model(mesh, skeleton, weights, np);
   std::ofstream out(path, std::ios::binary);
-  if(out)
-    internal::write_gltf_model(out, model, extension == "glb");
-  if(!out || !out.flush())
+  if(!out)
     throw std::runtime_error(path + ": cannot write the file");
+  try
+  {
+    internal::write_gltf_model(out, model, extension == "glb");
+    if(!out.flush())
+      throw std::runtime_error(path + ": cannot write the file");
+  }
+  catch(...)
+  {
+    out.close();
+    std::remove(path.c_str());
+    throw;
+  }
 }
 
 } // namespace IO
