@@ -77,38 +77,38 @@ inline Surface_clusters cluster_surface(const std::vector<Vec3>& points,
     key[v] = cell_key_of(Vec3{points[v][0] * cells_per_voxel, points[v][1] * cells_per_voxel,
                               points[v][2] * cells_per_voxel});
   });
-  // The root of a set is its first vertex, whatever the order of the joins.
-  std::vector<std::uint32_t> parent(n);
-  std::iota(parent.begin(), parent.end(), 0u);
-  auto join = [&](std::uint32_t a, std::uint32_t b) {
-    if(const std::uint32_t ra = find_root(parent, a), rb = find_root(parent, b); ra != rb)
-      parent[std::max(ra, rb)] = std::min(ra, rb);
-  };
-  for(const auto& [a, b, c] : triangles)
-  {
-    const bool ab = key[a] == key[b], bc = key[b] == key[c];
-    if(ab)
-      join(a, b);
-    if(bc)
-      join(b, c);
-    if(!(ab && bc) && key[c] == key[a]) // with both others, c and a are joined already
-      join(c, a);
-  }
+  // The root of a set is its first vertex, whatever the order of the joins: the triangles
+  // are joined by parts, side by side.
+  Concurrent_forest forest(n);
+  for_each_part(triangles.size(), index_parts(triangles.size(), threads), threads,
+                [&](std::size_t, std::size_t begin, std::size_t end) {
+                  for(std::size_t f = begin; f < end; ++f)
+                  {
+                    const auto [a, b, c] = triangles[f];
+                    const bool ab = key[a] == key[b], bc = key[b] == key[c];
+                    if(ab)
+                      forest.join(a, b);
+                    if(bc)
+                      forest.join(b, c);
+                    if(!(ab && bc) && key[c] == key[a]) // with both others, c and a are joined already
+                      forest.join(c, a);
+                  }
+                });
   key = std::vector<std::uint64_t>();
 
   Surface_clusters c;
-  c.cluster_of.resize(n);
+  c.cluster_of.resize(n); // each vertex's root, then its cluster
+  for_each_index(n, threads, [&](std::size_t v) { c.cluster_of[v] = forest.root(std::uint32_t(v)); });
   for(std::uint32_t v = 0; v < n; ++v)
   {
-    const std::uint32_t root = find_root(parent, v);
-    if(root == v)
+    if(c.cluster_of[v] == v)
     {
       c.cluster_of[v] = std::uint32_t(c.centroid.size());
       c.centroid.push_back(Vec3{0, 0, 0});
       c.size.push_back(0);
     }
     else
-      c.cluster_of[v] = c.cluster_of[root]; // root < v: numbered already
+      c.cluster_of[v] = c.cluster_of[c.cluster_of[v]]; // the root is smaller: numbered already
     Vec3& sum = c.centroid[c.cluster_of[v]];
     for(int i = 0; i < 3; ++i)
       sum[std::size_t(i)] += points[v][std::size_t(i)];
@@ -127,13 +127,23 @@ inline Surface_clusters cluster_surface(const std::vector<Vec3>& points,
   for_each_part(triangles.size(), parts, threads, [&](std::size_t part, std::size_t begin, std::size_t end) {
     part_edges[part].reserve(3 * (end - begin)); // address space: only what is written is touched
     part_triangles[part].reserve(end - begin);
+    // The edges met lately, by a hash of their ends: an edge between two clusters is met in
+    // the many triangles along it, mostly a few triangles apart, and kept once for those.
+    std::vector<std::uint64_t> recent(4096, ~std::uint64_t(0));
     for(std::size_t f = begin; f < end; ++f)
     {
       const auto& t = triangles[f];
       std::array<std::uint32_t, 3> k{c.cluster_of[t[0]], c.cluster_of[t[1]], c.cluster_of[t[2]]};
       for(int i = 0; i < 3; ++i)
         if(const std::uint32_t a = k[std::size_t(i)], b = k[std::size_t((i + 1) % 3)]; a != b)
-          part_edges[part].emplace_back(std::min(a, b), std::max(a, b));
+        {
+          const std::uint64_t edge = std::uint64_t(std::min(a, b)) << 32 | std::max(a, b);
+          if(std::uint64_t& slot = recent[(edge * 0x9E3779B97F4A7C15ull) >> 52]; slot != edge)
+          {
+            slot = edge;
+            part_edges[part].emplace_back(std::min(a, b), std::max(a, b));
+          }
+        }
       if(k[0] != k[1] && k[1] != k[2] && k[0] != k[2])
       {
         std::sort(k.begin(), k.end()); // the cotangent weights do not depend on the orientation
