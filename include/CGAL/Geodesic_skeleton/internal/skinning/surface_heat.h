@@ -222,16 +222,6 @@ struct Cluster_weights
 {
   std::vector<std::uint32_t> first, bone;
   std::vector<double> weight;
-
-  // The weight of bone `b` at the cluster whose weights from `at` on are still to be read,
-  // `at` moved past the bones below `b`: a walk over the cluster's bones, in increasing order.
-  double of(std::uint32_t c, std::uint32_t b, std::uint32_t& at) const
-  {
-    const std::uint32_t end = first[c + 1];
-    while(at < end && bone[at] < b)
-      ++at;
-    return at < end && bone[at] == b ? weight[at] : 0.;
-  }
 };
 
 // The heat system of the clustered surface before the heat is known: the lower triangle of
@@ -351,12 +341,13 @@ struct Linear_cluster_weights
   std::vector<Linear_weight> weights;
 };
 
-// Each cluster's weights that reach `negligible` at one of its vertices (`points`), with
-// their least-squares gradients (0 for a cluster of one vertex, its centroid), but not those
-// under the `k`-th largest at every vertex of the cluster: they are never kept.
+// Each cluster's weights (of `bones` bones) that reach `negligible` at one of its vertices
+// (`points`), with their least-squares gradients (0 for a cluster of one vertex, its
+// centroid), but not those under the `k`-th largest at every vertex of the cluster: they are
+// never kept.
 inline Linear_cluster_weights linear_cluster_weights(const std::vector<Vec3>& points, const Surface_clusters& clusters,
-                                                     const Cluster_weights& cluster_weights, std::size_t k,
-                                                     double negligible, unsigned threads)
+                                                     const Cluster_weights& cluster_weights, std::size_t bones,
+                                                     std::size_t k, double negligible, unsigned threads)
 {
   const std::size_t m = clusters.number_of_clusters();
   // The farthest vertex from the centroid, taken by parts of the vertices (a largest value
@@ -384,8 +375,8 @@ inline Linear_cluster_weights linear_cluster_weights(const std::vector<Vec3>& po
   out.first.assign(m + 1, 0);
   for_each_part(m, parts, threads, [&](std::size_t part, std::size_t begin_cluster, std::size_t end_cluster) {
     std::vector<Linear_weight>& linear = part_weights[part];
-    std::vector<Vec3> k_of_neighbour;
-    std::vector<std::uint32_t> read_at; // per neighbour of the cluster: where its weights are read
+    std::vector<Vec3> k_of_neighbour, gradient;
+    std::vector<double> at_neighbour(bones, 0.); // a neighbour's weights by bone, 0 where it has none
     std::vector<double> lowest;
     for(std::uint32_t c = std::uint32_t(begin_cluster); c < end_cluster; ++c)
     {
@@ -395,23 +386,26 @@ inline Linear_cluster_weights linear_cluster_weights(const std::vector<Vec3>& po
         gradient_weights(clusters, c, k_of_neighbour);
       const double r = std::sqrt(reach[c]);
       const std::uint32_t* neighbour = clusters.neighbours.data() + clusters.first_neighbour[c];
-      read_at.resize(k_of_neighbour.size());
+      const std::uint32_t begin_weight = cluster_weights.first[c], end_weight = cluster_weights.first[c + 1];
+      // The gradients a neighbour at a time, each summed over the neighbours in their order.
+      gradient.assign(end_weight - begin_weight, Vec3{0, 0, 0});
       for(std::uint32_t j = 0; j < k_of_neighbour.size(); ++j)
-        read_at[j] = cluster_weights.first[neighbour[j]];
-      for(std::uint32_t i = cluster_weights.first[c]; i < cluster_weights.first[c + 1]; ++i)
       {
-        const std::uint32_t b = cluster_weights.bone[i];
-        const double w = cluster_weights.weight[i];
-        Vec3 gradient{0, 0, 0};
-        for(std::uint32_t j = 0; j < k_of_neighbour.size(); ++j)
+        const std::uint32_t q = neighbour[j];
+        for(std::uint32_t t = cluster_weights.first[q]; t < cluster_weights.first[q + 1]; ++t)
+          at_neighbour[cluster_weights.bone[t]] = cluster_weights.weight[t];
+        for(std::uint32_t i = begin_weight; i < end_weight; ++i)
         {
-          const double difference = cluster_weights.of(neighbour[j], b, read_at[j]) - w;
+          const double difference = at_neighbour[cluster_weights.bone[i]] - cluster_weights.weight[i];
           for(std::size_t x = 0; x < 3; ++x)
-            gradient[x] += k_of_neighbour[j][x] * difference;
+            gradient[i - begin_weight][x] += k_of_neighbour[j][x] * difference;
         }
-        if(w + norm3(gradient) * r > negligible)
-          linear.push_back({b, w, gradient});
+        for(std::uint32_t t = cluster_weights.first[q]; t < cluster_weights.first[q + 1]; ++t)
+          at_neighbour[cluster_weights.bone[t]] = 0.;
       }
+      for(std::uint32_t i = begin_weight; i < end_weight; ++i)
+        if(const double w = cluster_weights.weight[i]; w + norm3(gradient[i - begin_weight]) * r > negligible)
+          linear.push_back({cluster_weights.bone[i], w, gradient[i - begin_weight]});
       const auto begin = linear.begin() + std::ptrdiff_t(first);
       if(std::size_t(linear.end() - begin) > k)
       {
@@ -466,7 +460,7 @@ bool diffuse_bone_heat(const std::vector<Vec3>& points, const Surface_clusters& 
     return false;
   // The clusters' weights are few, the vertices many: each vertex reads its cluster's.
   const Linear_cluster_weights linear =
-      linear_cluster_weights(points, clusters, cluster_weights, k, negligible, threads);
+      linear_cluster_weights(points, clusters, cluster_weights, bones, k, negligible, threads);
   for_each_index(points.size(), threads, [&](std::size_t v) {
     const std::uint32_t c = clusters.cluster_of[v];
     const Vec3 offset = sub(points[v], clusters.centroid[c]);
