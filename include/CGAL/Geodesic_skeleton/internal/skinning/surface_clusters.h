@@ -151,51 +151,77 @@ inline Surface_clusters cluster_surface(const std::vector<Vec3>& points,
       }
     }
   });
+  // Each part's triangles sorted on its own thread, then merged: sorted, each once.
+  for_each_part(parts, parts, threads, [&](std::size_t part, std::size_t, std::size_t) {
+    std::sort(part_triangles[part].begin(), part_triangles[part].end());
+  });
   c.triangles = std::move(part_triangles[0]);
   for(std::size_t part = 1; part < parts; ++part)
-    c.triangles.insert(c.triangles.end(), part_triangles[part].begin(), part_triangles[part].end());
+  {
+    std::vector<std::array<std::uint32_t, 3>> merged(c.triangles.size() + part_triangles[part].size());
+    std::merge(c.triangles.begin(), c.triangles.end(), part_triangles[part].begin(), part_triangles[part].end(),
+               merged.begin());
+    c.triangles = std::move(merged);
+  }
   part_triangles.clear();
-  std::sort(c.triangles.begin(), c.triangles.end());
   c.triangles.erase(std::unique(c.triangles.begin(), c.triangles.end()), c.triangles.end());
   // The neighbours of each cluster: the edges in both directions bucketed by cluster (a
-  // counting sort); each bucket, a few dozen entries that name a few clusters many times,
-  // keeps each cluster once (a stamp per cluster), in increasing order.
+  // counting sort, each part of the edges writing its own share of every bucket); each
+  // bucket, a few dozen entries that name a few clusters many times, keeps each cluster
+  // once (a stamp per cluster), in increasing order. Both by parts, on their threads.
   const std::size_t m = c.centroid.size();
-  std::vector<std::uint32_t> first(m + 1, 0);
-  for(const std::vector<Edge>& edges : part_edges)
-    for(const auto& [a, b] : edges)
+  std::vector<std::vector<std::uint32_t>> part_next(parts); // per part: its entries per cluster, then where they go
+  for_each_part(parts, parts, threads, [&](std::size_t part, std::size_t, std::size_t) {
+    part_next[part].assign(m, 0);
+    for(const auto& [a, b] : part_edges[part])
     {
-      ++first[a + 1];
-      ++first[b + 1];
+      ++part_next[part][a];
+      ++part_next[part][b];
     }
+  });
+  std::vector<std::uint32_t> first(m + 1, 0);
   for(std::size_t k = 0; k < m; ++k)
-    first[k + 1] += first[k];
+  {
+    first[k + 1] = first[k];
+    for(std::vector<std::uint32_t>& next : part_next)
+      first[k + 1] += std::exchange(next[k], first[k + 1]);
+  }
   std::vector<std::uint32_t> all(first.back());
-  {
-    std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
-    for(const std::vector<Edge>& edges : part_edges)
-      for(const auto& [a, b] : edges)
-      {
-        all[next[a]++] = b;
-        all[next[b]++] = a;
-      }
-  }
+  for_each_part(parts, parts, threads, [&](std::size_t part, std::size_t, std::size_t) {
+    std::vector<std::uint32_t>& next = part_next[part];
+    for(const auto& [a, b] : part_edges[part])
+    {
+      all[next[a]++] = b;
+      all[next[b]++] = a;
+    }
+  });
   part_edges.clear();
+  part_next.clear();
+  const std::size_t cluster_parts = index_parts(m, threads);
+  std::vector<std::vector<std::uint32_t>> part_neighbours(cluster_parts);
   c.first_neighbour.assign(m + 1, 0);
-  c.neighbours.reserve(all.size() / 4);
-  std::vector<std::uint32_t> stamp(m, std::uint32_t(-1));
+  for_each_part(m, cluster_parts, threads, [&](std::size_t part, std::size_t begin_cluster, std::size_t end_cluster) {
+    std::vector<std::uint32_t>& neighbours = part_neighbours[part];
+    neighbours.reserve((first[end_cluster] - first[begin_cluster]) / 4);
+    std::vector<std::uint32_t> stamp(m, std::uint32_t(-1));
+    for(std::size_t k = begin_cluster; k < end_cluster; ++k)
+    {
+      const std::size_t begin = neighbours.size();
+      for(std::uint32_t i = first[k]; i < first[k + 1]; ++i)
+        if(const std::uint32_t q = all[i]; stamp[q] != k)
+        {
+          stamp[q] = std::uint32_t(k);
+          neighbours.push_back(q);
+        }
+      std::sort(neighbours.begin() + std::ptrdiff_t(begin), neighbours.end());
+      c.first_neighbour[k + 1] = std::uint32_t(neighbours.size() - begin); // a count, made an offset below
+    }
+  });
   for(std::size_t k = 0; k < m; ++k)
-  {
-    const std::size_t begin = c.neighbours.size();
-    for(std::uint32_t i = first[k]; i < first[k + 1]; ++i)
-      if(const std::uint32_t q = all[i]; stamp[q] != k)
-      {
-        stamp[q] = std::uint32_t(k);
-        c.neighbours.push_back(q);
-      }
-    std::sort(c.neighbours.begin() + std::ptrdiff_t(begin), c.neighbours.end());
-    c.first_neighbour[k + 1] = std::uint32_t(c.neighbours.size());
-  }
+    c.first_neighbour[k + 1] += c.first_neighbour[k];
+  c.neighbours.reserve(c.first_neighbour[m]);
+  for(const std::vector<std::uint32_t>& neighbours : part_neighbours)
+    c.neighbours.insert(c.neighbours.end(), neighbours.begin(), neighbours.end());
   return c;
 }
 
