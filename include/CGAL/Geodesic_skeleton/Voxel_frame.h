@@ -9,6 +9,7 @@
 
 #include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/internal/nearest_integer.h>
+#include <CGAL/Geodesic_skeleton/internal/vec3.h>
 
 #include <array>
 #include <cmath>
@@ -47,10 +48,10 @@ public:
       if(!std::isfinite(origin[i]))
         throw std::invalid_argument("Voxel_frame: the origin must be finite");
       for(int j = 0; j < 3; ++j)
-        if(std::abs(dot(axes[i], axes[j]) - (i == j ? 1. : 0.)) > 1e-6)
+        if(std::abs(internal::dot3(axes[i], axes[j]) - (i == j ? 1. : 0.)) > 1e-6)
           throw std::invalid_argument("Voxel_frame: the axes must be orthonormal");
     }
-    if(dot(cross(axes[0], axes[1]), axes[2]) < 0)
+    if(internal::dot3(internal::cross3(axes[0], axes[1]), axes[2]) < 0)
       throw std::invalid_argument("Voxel_frame: the axes must be right-handed");
   }
 
@@ -82,7 +83,8 @@ public:
   Vector to_grid(const Vector& p) const
   {
     const Vector d{p[0] - m_origin[0], p[1] - m_origin[1], p[2] - m_origin[2]};
-    return Vector{quantized(dot(d, m_axes[0])), quantized(dot(d, m_axes[1])), quantized(dot(d, m_axes[2]))};
+    return Vector{quantized(internal::dot3(d, m_axes[0])), quantized(internal::dot3(d, m_axes[1])),
+                  quantized(internal::dot3(d, m_axes[2]))};
   }
   /// The step to which to_grid() rounds grid coordinates, 2^-20 voxels: far below any
   /// distance the stages tell apart, far above the rounding errors of a scaling.
@@ -119,14 +121,6 @@ private:
   // The world length `w` along an axis in voxels, rounded to grid_quantum (a product, not
   // a division, per coordinate).
   double quantized(double w) const { return internal::nearest_integer(w * m_quanta_per_unit) * grid_quantum; }
-  static double dot(const Vector& a, const Vector& b)
-  {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  }
-  static Vector cross(const Vector& a, const Vector& b)
-  {
-    return Vector{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-  }
 
   Vector m_origin{0., 0., 0.};
   std::array<Vector, 3> m_axes{Vector{1., 0., 0.}, Vector{0., 1., 0.}, Vector{0., 0., 1.}};

@@ -8,28 +8,13 @@
 /// Opens the cycles of a voxel skeleton that the mesh has no handle for: the tunnels that
 /// voxelization makes where two parts come within a voxel of each other.
 
-#include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/Voxelized_surface.h>
-#include <CGAL/Geodesic_skeleton/internal/cut_spurious_cycles/spurious_cycles.h>
 #include <CGAL/Geodesic_skeleton/internal/cut_spurious_cycles/touching_curves.h>
-#include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
-#include <CGAL/Geodesic_skeleton/internal/grid_line_crossings.h>
-#include <CGAL/Geodesic_skeleton/internal/to_graph/skeleton_adjacency.h>
-#include <CGAL/Geodesic_skeleton/internal/voxelize/mesh_triangles.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
-#include <CGAL/boost/graph/helpers.h>
-#include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
-#include <algorithm>
-#include <array>
-#include <climits>
 #include <cstddef>
-#include <cstdint>
-#include <numeric>
-#include <utility>
-#include <vector>
 
 namespace CGAL {
 namespace Geodesic_skeleton {

@@ -17,7 +17,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <sstream>
 #include <vector>
 
 namespace CGAL {

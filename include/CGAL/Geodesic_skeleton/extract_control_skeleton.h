@@ -235,7 +235,7 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
     visitor.stage_finished(stage, ms);
   }};
   Control_skeleton_report report;
-  internal::Stage_clock<internal::Stage_visitor> clock(stage_visitor, report);
+  internal::Stage_clock clock(stage_visitor, report);
   out = Control_skeleton<Point>();
   const internal::Control_skeleton_settings settings =
       internal::control_skeleton_settings(np, "extract_control_skeleton");
@@ -247,14 +247,11 @@ Control_skeleton_report extract_control_skeleton(const FaceGraph& mesh, Control_
       internal::written_output<Dense_voxel_grid>(np, internal_np::voxelized_solid_tag), clock, report);
   if(Reeb_graph<FaceGraph>* reeb = internal::written_output<Reeb_graph<FaceGraph>>(np, internal_np::reeb_graph_output_tag))
   {
-    const std::size_t intervals =
-        choose_parameter(get_parameter(np, internal_np::number_of_reeb_intervals_tag),
-                         static_cast<std::size_t>(parameter_ranges::number_of_reeb_intervals.default_value));
     const auto vim = CGAL::get_initialized_vertex_index_map(mesh, np);
     std::vector<double> field(static_cast<std::size_t>(num_vertices(mesh)));
     auto field_map = boost::make_iterator_property_map(field.begin(), vim);
     geodesic_mapping_function(mesh, field_map, np);
-    reeb_graph(mesh, field_map, intervals, *reeb, np);
+    reeb_graph(mesh, field_map, settings.number_of_reeb_intervals, *reeb, np);
     report.reeb_nodes = num_vertices(*reeb);
     report.reeb_edges = num_edges(*reeb);
     clock.finished("reeb_graph");

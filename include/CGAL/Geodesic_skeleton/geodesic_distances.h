@@ -90,18 +90,6 @@ void require_valid_edge_weights(const FaceGraph& g, EdgeWeightMap weights, const
   }
 }
 
-template <typename Vertex, typename Sources>
-void collect_sources(const Sources& sources, std::vector<Vertex>& out, std::true_type /*single*/)
-{
-  out.push_back(sources);
-}
-
-template <typename Vertex, typename Sources>
-void collect_sources(const Sources& sources, std::vector<Vertex>& out, std::false_type /*range*/)
-{
-  out.assign(std::begin(sources), std::end(sources));
-}
-
 // A single vertex descriptor or a range of them, as a vector.
 template <typename FaceGraph, typename Sources>
 std::vector<typename boost::graph_traits<FaceGraph>::vertex_descriptor>
@@ -109,8 +97,10 @@ source_vector(const Sources& sources)
 {
   using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
   std::vector<vertex_descriptor> out;
-  collect_sources<vertex_descriptor>(
-      sources, out, std::is_convertible<Sources, vertex_descriptor>());
+  if constexpr(std::is_convertible<Sources, vertex_descriptor>::value)
+    out.push_back(sources);
+  else
+    out.assign(std::begin(sources), std::end(sources));
   return out;
 }
 

@@ -11,7 +11,6 @@
 
 #include <CGAL/Geodesic_skeleton/Voxel_distance_field.h>
 #include <CGAL/Geodesic_skeleton/Voxel_skeleton.h>
-#include <CGAL/Geodesic_skeleton/classify_skeleton_points.h>
 #include <CGAL/Geodesic_skeleton/internal/prune/branched_regions.h>
 #include <CGAL/Geodesic_skeleton/internal/prune/spurious_branches.h>
 #include <CGAL/Geodesic_skeleton/internal/voxel_components.h>
@@ -20,13 +19,11 @@
 
 #include <CGAL/property_map.h>
 
-#include <array>
 #include <cmath>
 #include <cstddef>
 #include <functional>
 #include <stdexcept>
 #include <string>
-#include <vector>
 
 namespace CGAL {
 namespace Geodesic_skeleton {

@@ -23,7 +23,6 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <set>
 #include <stdexcept>
 #include <string>
 #include <utility>

@@ -26,14 +26,8 @@
 #include <boost/graph/adjacency_list.hpp>
 
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
-#include <cstdint>
-#include <limits>
-#include <sstream>
 #include <stdexcept>
-#include <utility>
-#include <vector>
 
 namespace CGAL {
 namespace Geodesic_skeleton {

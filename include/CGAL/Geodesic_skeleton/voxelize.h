@@ -8,30 +8,16 @@
 /// The solid interior of a mesh as a set of voxels, in a grid aligned with the mesh's
 /// principal axes.
 
-#include <CGAL/Geodesic_skeleton/Voxel_frame.h>
-#include <CGAL/Geodesic_skeleton/Voxel_key.h>
 #include <CGAL/Geodesic_skeleton/Voxelized_surface.h>
 #include <CGAL/Geodesic_skeleton/internal/grid_layout.h>
-#include <CGAL/Geodesic_skeleton/internal/voxelize/byte_runs.h>
-#include <CGAL/Geodesic_skeleton/internal/voxelize/mesh_triangles.h>
-#include <CGAL/Geodesic_skeleton/internal/voxelize/peel_surface_voxels.h>
-#include <CGAL/Geodesic_skeleton/internal/voxelize/principal_frame.h>
 #include <CGAL/Geodesic_skeleton/internal/voxelize/solid_voxels.h>
-#include <CGAL/Geodesic_skeleton/internal/voxelize/triangle_box_overlap.h>
 #include <CGAL/Geodesic_skeleton/parameter_ranges.h>
 #include <CGAL/Geodesic_skeleton/parameters.h>
 
-#include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
-#include <algorithm>
-#include <cmath>
 #include <cstddef>
-#include <cstdint>
-#include <sstream>
 #include <stdexcept>
-#include <string>
-#include <vector>
 
 namespace CGAL {
 namespace Geodesic_skeleton {
@@ -138,7 +124,12 @@ template <typename FaceGraph, typename VoxelSet,
 std::size_t voxelize(const FaceGraph& mesh, VoxelSet& voxels,
                      const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return internal::voxelize_impl(mesh, voxels, np);
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const internal::Voxelize_settings settings = internal::voxelize_settings(np, "voxelize");
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, mesh));
+  return internal::voxelize_with(mesh, vpm, voxels, settings);
 }
 
 } // namespace Geodesic_skeleton

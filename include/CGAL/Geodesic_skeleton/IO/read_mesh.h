@@ -17,7 +17,6 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/number_utils.h>
 
-#include <cctype>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -38,15 +37,10 @@ namespace internal {
 // files (an 80-byte header, a 32-bit count, 50 bytes per triangle) are scanned first.
 inline bool binary_STL_has_non_finite_coordinate(const std::string& path)
 {
-  if(path.size() < 4)
-    return false;
-  std::string extension = path.substr(path.size() - 4);
-  for(char& c : extension)
-    c = char(std::tolower(static_cast<unsigned char>(c)));
   std::ifstream in(path, std::ios::binary);
   char header[80];
   unsigned char count_bytes[4];
-  if(extension != ".stl" || !in.read(header, 80) || !in.read(reinterpret_cast<char*>(count_bytes), 4))
+  if(file_extension(path) != "stl" || !in.read(header, 80) || !in.read(reinterpret_cast<char*>(count_bytes), 4))
     return false;
   const std::uint64_t count = count_bytes[0] | (count_bytes[1] << 8) | (count_bytes[2] << 16) |
                               (std::uint64_t(count_bytes[3]) << 24);

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <numeric>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -306,8 +307,7 @@ inline std::vector<Point_side> sides_of_points(const Grid_line_crossings& g, con
 {
   std::vector<Point_side> side(points.size(), Point_side::undecided);
   std::vector<std::size_t> pending(points.size());
-  for(std::size_t i = 0; i < points.size(); ++i)
-    pending[i] = i;
+  std::iota(pending.begin(), pending.end(), std::size_t(0));
   for(int axis = 0; axis < 3 && !pending.empty(); ++axis)
   {
     const int b = (axis + 1) % 3, c = (axis + 2) % 3;
@@ -372,8 +372,7 @@ inline std::vector<Vec3> inside_points_in_cubes(const Grid_line_crossings& g, co
   std::vector<double> best_score(centres.size(), -HUGE_VAL);
   found.assign(centres.size(), false);
   std::vector<std::size_t> pending(centres.size());
-  for(std::size_t i = 0; i < centres.size(); ++i)
-    pending[i] = i;
+  std::iota(pending.begin(), pending.end(), std::size_t(0));
   for(int axis = 0; axis < 3 && !pending.empty(); ++axis)
   {
     const int b = (axis + 1) % 3, c = (axis + 2) % 3;

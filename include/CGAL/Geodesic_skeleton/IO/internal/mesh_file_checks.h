@@ -35,6 +35,15 @@ inline std::string file_extension(const std::string& path)
   return extension;
 }
 
+// The size in bytes of the file that `in` reads, `in` left at its start.
+inline double file_size_of(std::ifstream& in)
+{
+  in.seekg(0, std::ios::end);
+  const double size = double(in.tellg());
+  in.seekg(0);
+  return size;
+}
+
 // CGAL 5.5's PLY reader (CGAL/IO/PLY/PLY_reader.h) trusts the header. It adds each
 // "property" line to the last "element" without checking that there is one: a property
 // before any element calls back() on an empty vector, undefined behaviour that crashes.
@@ -51,9 +60,7 @@ inline std::string file_extension(const std::string& path)
 inline std::string ply_header_problem(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
-  in.seekg(0, std::ios::end);
-  const double file_size = double(in.tellg());
-  in.seekg(0);
+  const double file_size = file_size_of(in);
   std::string line;
   bool element_seen = false;
   std::string element;
@@ -192,9 +199,7 @@ inline std::string off_file_problem(const std::string& path)
   if(const std::string problem = off_header_counts_problem(path); !problem.empty())
     return problem;
   std::ifstream in(path, std::ios::binary);
-  in.seekg(0, std::ios::end);
-  const double file_size = double(in.tellg());
-  in.seekg(0);
+  const double file_size = file_size_of(in);
   CGAL::File_scanner_OFF scanner(in);
   if(in.fail())
     return std::string(); // no OFF header: CGAL refuses the file itself

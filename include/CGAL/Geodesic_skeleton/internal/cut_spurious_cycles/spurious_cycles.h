@@ -62,12 +62,6 @@ std::size_t capped_genus_sum(const FaceGraph& mesh, const Vertex_components& com
   return genus;
 }
 
-template <typename FaceGraph>
-std::size_t capped_genus_sum(const FaceGraph& mesh)
-{
-  return capped_genus_sum(mesh, vertex_components(mesh, CGAL::get_initialized_vertex_index_map(mesh)));
-}
-
 // Components and cycle rank (E - V + C) of the graph restricted to the nodes not removed.
 inline std::pair<std::size_t, std::size_t> components_and_cycles(const Skeleton_adjacency& graph,
                                                                  const std::vector<bool>& removed)

@@ -25,12 +25,18 @@ namespace CGAL {
 namespace Geodesic_skeleton {
 namespace internal {
 
+// A visitor of any type, behind one type.
+struct Stage_visitor
+{
+  std::function<void(const std::string&, double)> stage_finished_function;
+  void stage_finished(const std::string& stage, double milliseconds) { stage_finished_function(stage, milliseconds); }
+};
+
 // Times stages, reports them to the visitor and records them.
-template <typename Visitor>
 class Stage_clock
 {
 public:
-  Stage_clock(Visitor& visitor, Control_skeleton_report& report)
+  Stage_clock(Stage_visitor& visitor, Control_skeleton_report& report)
     : m_visitor(visitor), m_report(report), m_start(Clock::now()), m_stage_start(m_start)
   {}
   void finished(const char* stage)
@@ -45,7 +51,7 @@ public:
 
 private:
   using Clock = std::chrono::steady_clock;
-  Visitor& m_visitor;
+  Stage_visitor& m_visitor;
   Control_skeleton_report& m_report;
   Clock::time_point m_start, m_stage_start;
 };
@@ -68,16 +74,21 @@ struct Control_skeleton_settings
   std::optional<double> smallest_radius;
   std::optional<double> joint_spacing;
   double joint_spacing_factor = 0;
+  std::size_t number_of_reeb_intervals = 0;
   Bone_splitting_settings split; // bend threshold, straightness, bone lengths, chords
 };
 
+// The parameter when given, checked against `range` as given when there is one (its
+// default, not read, is in range).
 template <typename NamedParameters, typename Tag, typename T>
-std::optional<T> given_parameter(const NamedParameters& np, Tag tag, T)
+std::optional<T> given_parameter(const NamedParameters& np, Tag tag, T, const Parameter_range* range = nullptr,
+                                 const std::string& caller = std::string())
 {
   if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, Tag>::value)
     return std::nullopt;
   else
-    return static_cast<T>(CGAL::parameters::get_parameter(np, tag));
+    return static_cast<T>(range ? checked_parameter(*range, CGAL::parameters::get_parameter(np, tag), caller)
+                                : CGAL::parameters::get_parameter(np, tag));
 }
 
 // Reads every parameter of the chain and checks it (given or default) against its range
@@ -105,29 +116,20 @@ Control_skeleton_settings control_skeleton_settings(const NamedParameters& np, c
                                      ranges::limb_protrusion_factor.default_value);
   s.sheet_lobe_reach_factor = checked(ranges::sheet_lobe_reach_factor, internal_np::sheet_lobe_reach_factor_tag,
                                       ranges::sheet_lobe_reach_factor.default_value);
-  checked(ranges::thin_part_radius, internal_np::thin_part_radius_tag, ranges::thin_part_radius.default_value);
-  s.thin_part_radius = given_parameter(np, internal_np::thin_part_radius_tag, double());
-  checked(ranges::smoothing_window, internal_np::smoothing_window_tag,
-          static_cast<int>(ranges::smoothing_window.default_value));
-  s.smoothing_window = given_parameter(np, internal_np::smoothing_window_tag, int());
+  s.thin_part_radius =
+      given_parameter(np, internal_np::thin_part_radius_tag, double(), &ranges::thin_part_radius, caller);
+  s.smoothing_window = given_parameter(np, internal_np::smoothing_window_tag, int(), &ranges::smoothing_window, caller);
   s.split = bone_splitting_settings(np, caller); // tip_joint_setback too; joint_spacing when given
   s.joint_spacing_factor = checked(ranges::joint_spacing_factor, internal_np::joint_spacing_factor_tag,
                                    ranges::joint_spacing_factor.default_value);
   s.level_of_detail_resolution = checked(ranges::level_of_detail_resolution,
                                          internal_np::level_of_detail_resolution_tag, default_voxel_resolution);
-  checked(ranges::number_of_reeb_intervals, internal_np::number_of_reeb_intervals_tag,
-          static_cast<std::size_t>(ranges::number_of_reeb_intervals.default_value)); // read with the Reeb graph
+  s.number_of_reeb_intervals = checked(ranges::number_of_reeb_intervals, internal_np::number_of_reeb_intervals_tag,
+                                       static_cast<std::size_t>(ranges::number_of_reeb_intervals.default_value));
   s.smallest_radius = given_parameter(np, internal_np::smallest_radius_tag, double());
   s.joint_spacing = given_parameter(np, internal_np::joint_spacing_tag, double());
   return s;
 }
-
-// A visitor of any type, behind one type.
-struct Stage_visitor
-{
-  std::function<void(const std::string&, double)> stage_finished_function;
-  void stage_finished(const std::string& stage, double milliseconds) { stage_finished_function(stage, milliseconds); }
-};
 
 } // namespace internal
 } // namespace Geodesic_skeleton

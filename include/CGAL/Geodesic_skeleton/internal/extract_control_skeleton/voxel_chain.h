@@ -52,7 +52,7 @@ void extract_control_skeleton_with(
     const Control_skeleton_settings& settings,
     Curve_skeleton<Point, typename boost::graph_traits<FaceGraph>::vertex_descriptor>* curve_output,
     Curve_skeleton<Point, typename boost::graph_traits<FaceGraph>::vertex_descriptor>* thinned_output,
-    Dense_voxel_grid* solid_output, Stage_clock<Stage_visitor>& clock, Control_skeleton_report& report)
+    Dense_voxel_grid* solid_output, Stage_clock& clock, Control_skeleton_report& report)
 {
   using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
   using Skeleton = Curve_skeleton<Point, vertex_descriptor>;

@@ -290,17 +290,6 @@ std::size_t voxelize_with(const FaceGraph& mesh, const VertexPointMap& vpm, Voxe
   return count;
 }
 
-template <typename FaceGraph, typename VoxelSet, typename NamedParameters>
-std::size_t voxelize_impl(const FaceGraph& mesh, VoxelSet& voxels, const NamedParameters& np)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const Voxelize_settings settings = voxelize_settings(np, "voxelize");
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, mesh));
-  return voxelize_with(mesh, vpm, voxels, settings);
-}
-
 } // namespace internal
 } // namespace Geodesic_skeleton
 } // namespace CGAL
