@@ -18,7 +18,9 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
+#include <numeric>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -528,6 +530,41 @@ BOOST_AUTO_TEST_CASE(bad_parameters_and_skeletons_are_refused)
   Control bad_point = skeleton;
   bad_point[gs::numbered_bones(bad_point)[1]].points = {Point(0, 0, 10), Point(0, 0, std::nan(""))};
   BOOST_CHECK_THROW(weights_of(mesh, bad_point, CGAL::parameters::default_values()), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(the_concurrent_forest_gives_the_sets_of_one_thread)
+{
+  // Random joins over 200,000 elements, by two threads at once (the skinning's clusters
+  // are joined so); the sets must be those one thread gives, each rooted at its smallest.
+  const std::uint32_t n = 200000;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> joins;
+  std::uint64_t state = 12345;
+  auto next = [&] { return std::uint32_t((state = state * 6364136223846793005ull + 1442695040888963407ull) >> 33) % n; };
+  for(std::uint32_t i = 0; i < 150000; ++i)
+  {
+    const std::uint32_t a = next();
+    joins.emplace_back(a, std::min(n - 1, a + next() % 64)); // mostly near: the threads meet
+  }
+  std::vector<std::uint32_t> parent(n);
+  std::iota(parent.begin(), parent.end(), 0u);
+  for(const auto& [a, b] : joins)
+    if(const std::uint32_t ra = gs::internal::find_root(parent, a), rb = gs::internal::find_root(parent, b); ra != rb)
+      parent[std::max(ra, rb)] = std::min(ra, rb);
+  gs::internal::Concurrent_forest forest(n);
+  gs::internal::for_each_part(joins.size(), 2, 2, [&](std::size_t, std::size_t begin, std::size_t end) {
+    for(std::size_t i = begin; i < end; ++i)
+      forest.join(joins[i].first, joins[i].second);
+  });
+  std::size_t sets = 0;
+  for(std::uint32_t x = 0; x < n; ++x)
+  {
+    const std::uint32_t root = gs::internal::find_root(parent, x);
+    BOOST_REQUIRE_EQUAL(forest.root(x), root);
+    BOOST_REQUIRE_LE(root, x);
+    sets += root == x;
+  }
+  BOOST_CHECK_LT(sets, std::size_t(n) / 2); // the joins made large sets
+  BOOST_CHECK_GT(sets, 1u);
 }
 
 BOOST_AUTO_TEST_CASE(the_weights_are_the_same_on_one_thread_and_on_all)
