@@ -127,8 +127,9 @@ inline Surface_clusters cluster_surface(const std::vector<Vec3>& points,
   for_each_part(triangles.size(), parts, threads, [&](std::size_t part, std::size_t begin, std::size_t end) {
     part_edges[part].reserve(3 * (end - begin)); // address space: only what is written is touched
     part_triangles[part].reserve(end - begin);
-    // The edges met lately, by a hash of their ends: an edge between two clusters is met in
-    // the many triangles along it, mostly a few triangles apart, and kept once for those.
+    // The edges met lately, by a (Fibonacci) hash of their ends: an edge between two
+    // clusters is met in the many triangles along it, mostly a few triangles apart, and kept
+    // once for those; the buckets below drop the repeats that remain.
     std::vector<std::uint64_t> recent(4096, ~std::uint64_t(0));
     for(std::size_t f = begin; f < end; ++f)
     {
@@ -182,9 +183,14 @@ inline Surface_clusters cluster_surface(const std::vector<Vec3>& points,
   std::vector<std::uint32_t> first(m + 1, 0);
   for(std::size_t k = 0; k < m; ++k)
   {
-    first[k + 1] = first[k];
+    std::uint32_t at = first[k];
     for(std::vector<std::uint32_t>& next : part_next)
-      first[k + 1] += std::exchange(next[k], first[k + 1]);
+    {
+      const std::uint32_t count = next[k];
+      next[k] = at; // where the part's entries of cluster k go
+      at += count;
+    }
+    first[k + 1] = at;
   }
   std::vector<std::uint32_t> all(first.back());
   for_each_part(parts, parts, threads, [&](std::size_t part, std::size_t, std::size_t) {
