@@ -78,17 +78,14 @@ struct Control_skeleton_settings
   Bone_splitting_settings split; // bend threshold, straightness, bone lengths, chords
 };
 
-// The parameter when given, checked against `range` as given when there is one (its
-// default, not read, is in range).
+// The parameter when given, converted to T.
 template <typename NamedParameters, typename Tag, typename T>
-std::optional<T> given_parameter(const NamedParameters& np, Tag tag, T, const Parameter_range* range = nullptr,
-                                 const std::string& caller = std::string())
+std::optional<T> given_parameter(const NamedParameters& np, Tag tag, T)
 {
   if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, Tag>::value)
     return std::nullopt;
   else
-    return static_cast<T>(range ? checked_parameter(*range, CGAL::parameters::get_parameter(np, tag), caller)
-                                : CGAL::parameters::get_parameter(np, tag));
+    return static_cast<T>(CGAL::parameters::get_parameter(np, tag));
 }
 
 // Reads every parameter of the chain and checks it (given or default) against its range
@@ -103,6 +100,12 @@ Control_skeleton_settings control_skeleton_settings(const NamedParameters& np, c
   auto checked = [&](const Parameter_range& range, auto tag, auto default_value) {
     return checked_parameter(range, choose_parameter(get_parameter(np, tag), default_value), caller);
   };
+  // A parameter whose default depends on the resolution: checked as given (before any
+  // conversion to T), and left unset when not given.
+  auto checked_when_given = [&](const Parameter_range& range, auto tag, auto type) {
+    checked(range, tag, decltype(type)(range.default_value));
+    return given_parameter(np, tag, type);
+  };
   Control_skeleton_settings s;
   s.resolution = checked(ranges::resolution, internal_np::resolution_tag, default_voxel_resolution);
   s.fill_holes = choose_parameter(get_parameter(np, internal_np::fill_holes_tag), true);
@@ -116,9 +119,8 @@ Control_skeleton_settings control_skeleton_settings(const NamedParameters& np, c
                                      ranges::limb_protrusion_factor.default_value);
   s.sheet_lobe_reach_factor = checked(ranges::sheet_lobe_reach_factor, internal_np::sheet_lobe_reach_factor_tag,
                                       ranges::sheet_lobe_reach_factor.default_value);
-  s.thin_part_radius =
-      given_parameter(np, internal_np::thin_part_radius_tag, double(), &ranges::thin_part_radius, caller);
-  s.smoothing_window = given_parameter(np, internal_np::smoothing_window_tag, int(), &ranges::smoothing_window, caller);
+  s.thin_part_radius = checked_when_given(ranges::thin_part_radius, internal_np::thin_part_radius_tag, double());
+  s.smoothing_window = checked_when_given(ranges::smoothing_window, internal_np::smoothing_window_tag, int());
   s.split = bone_splitting_settings(np, caller); // tip_joint_setback too; joint_spacing when given
   s.joint_spacing_factor = checked(ranges::joint_spacing_factor, internal_np::joint_spacing_factor_tag,
                                    ranges::joint_spacing_factor.default_value);
